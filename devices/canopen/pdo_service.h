@@ -44,6 +44,11 @@ class PdoService {
   /// Application event for TPDO n (types 0 and 254/255): sends now (or at the next SYNC for
   /// type 0), subject to the inhibit time.
   void request_tpdo(int number);
+  /// Restarts TPDO n's event timer from now (e.g. a device whose timer object was rewritten).
+  void restart_event_timer(int number);
+  /// Minimum spacing the device itself imposes on TPDO n, on top of its inhibit time (e.g. a
+  /// profile's cyclic timer that paces change-driven transmission). 0 = none.
+  void set_min_spacing(int number, sim::Duration spacing);
   void process(sim::Time now);
 
   /// Current mapped length of TPDO/RPDO n (for tests and tools).
@@ -75,6 +80,7 @@ class PdoService {
     sim::Time inhibit_until{};
     sim::Time next_timer{};
     std::array<std::uint8_t, 8> last_sent{};
+    sim::Duration min_spacing{0};
     std::array<std::uint8_t, 8> sampled{};   ///< type 252: sampled at SYNC
     bool has_sample = false;
   };

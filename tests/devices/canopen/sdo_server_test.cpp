@@ -164,3 +164,10 @@ TEST_F(LenientSdoServerTest, ExtendsAndTruncates) {
   // Short request padded with zeros.
   EXPECT_EQ(req({0x40, 0x00, 0x20, 0x00}).size(), 1u);
 }
+
+TEST_F(SdoServerTest, LengthMismatchAbortIsConfigurable) {
+  EXPECT_EQ(h.write(0x2000, 0, 7, 4), 0x06070012u);
+  h.node().policy().sdo.length_mismatch = canopen::SdoAbort::TypeMismatch;
+  EXPECT_EQ(h.write(0x2000, 0, 7, 4), 0x06070010u);
+  EXPECT_EQ(h.write(0x2003 + 3, 0, 7, 1), 0x06070010u);  // 0x2006 is U64: too short
+}
