@@ -24,7 +24,7 @@ void Diagnostics::bind() {
     if (origin != Origin::Sdo || count_ == 0) return SdoAbort::None;
     --count_;
     if (count_ == 0) communication_latched_ = false;
-    ++pending_resets_;
+    emcy(kEmcyNoError);
     return SdoAbort::None;
   });
   od.add_check(obj::kErrorField, 0, [](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
@@ -78,22 +78,22 @@ void Diagnostics::set_alarm(std::uint16_t bit, bool active) {
   alarms_ = static_cast<std::uint16_t>(active ? (alarms_ | bit) : (alarms_ & ~bit));
   if (active) {
     record(emcy_code(bit));
-    node_.emergency().send_frame(emcy_code(bit), error_register());
+    emcy(emcy_code(bit));
   } else {
     publish();
-    node_.emergency().send_frame(kEmcyNoError, error_register());
+    emcy(kEmcyNoError);
   }
 }
 
 void Diagnostics::communication_error() {
   communication_latched_ = true;
   record(kEmcyCommunication);
-  node_.emergency().send_frame(kEmcyCommunication, error_register());
+  emcy(kEmcyCommunication);
 }
 
 void Diagnostics::signal(std::uint16_t code, std::uint8_t register_bits) {
   record(code);
-  node_.emergency().send_frame(code, static_cast<std::uint8_t>(error_register() | register_bits));
+  if (queued_ < queue_.size()) queue_[queued_++] = Pending{code, static_cast<std::uint8_t>(error_register() | register_bits)};
 }
 
 void Diagnostics::clear_list(bool send_reset) {
@@ -102,16 +102,22 @@ void Diagnostics::clear_list(bool send_reset) {
   last_entry_ = 0;
   communication_latched_ = false;
   publish();
-  if (send_reset && had) node_.emergency().send_frame(kEmcyNoError, error_register());
+  if (send_reset && had) emcy(kEmcyNoError);
+}
+
+void Diagnostics::emcy(std::uint16_t code) {
+  // The register as it is when the event happens (a 0x1001 read has already popped its entry).
+  if (queued_ < queue_.size()) queue_[queued_++] = Pending{code, error_register()};
 }
 
 void Diagnostics::reset_communication() {
-  pending_resets_ = 0;
+  queued_ = 0;
   clear_list(false);
 }
 
 void Diagnostics::process() {
-  for (; pending_resets_ > 0; --pending_resets_) node_.emergency().send_frame(kEmcyNoError, error_register());
+  for (std::size_t i = 0; i < queued_; ++i) node_.emergency().send_frame(queue_[i].code, queue_[i].error_register);
+  queued_ = 0;
   publish();
 }
 

@@ -4,6 +4,10 @@
 // list 0x1003 whose count the master consumes by reading 0x1001 (one EMCY 0x0000 per entry).
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "devices/canopen/node.h"
@@ -35,7 +39,7 @@ class Diagnostics {
   void signal(std::uint16_t code, std::uint8_t register_bits);
   /// Reset Communication: the list is cleared [M].
   void reset_communication();
-  /// Sends what a 0x1001 read has queued; keeps 0x1001 current.
+  /// Sends the queued EMCYs (after the SDO answer that caused them); keeps 0x1001 current.
   void process();
 
   std::uint16_t alarms() const { return alarms_; }
@@ -54,7 +58,13 @@ class Diagnostics {
   bool communication_latched_ = false;
   std::uint8_t count_ = 0;
   std::uint32_t last_entry_ = 0;
-  int pending_resets_ = 0;
+  void emcy(std::uint16_t code);
+  struct Pending {
+    std::uint16_t code;
+    std::uint8_t error_register;
+  };
+  std::array<Pending, 16> queue_{};  // EMCYs go out from process(), after the frame that caused them
+  std::size_t queued_ = 0;
   std::uint8_t published_register_ = 0;
   canopen::OdEntry* alarms_entry_ = nullptr;
   canopen::OdEntry* count_entry_ = nullptr;

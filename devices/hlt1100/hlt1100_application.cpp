@@ -1,6 +1,7 @@
 #include "devices/hlt1100/hlt1100_application.h"
 
 #include <cmath>
+#include <utility>
 
 #include "devices/canopen/pdo_service.h"
 #include "devices/canopen/store_restore.h"
@@ -35,6 +36,7 @@ SdoAbort Application::parameter_out_of_range(const OdEntry& entry, std::span<std
   if (settings_.parameter_error_abort) return SdoAbort::InvalidValue;
   std::copy(entry.value.begin(), entry.value.end(), data.begin());
   diagnostics_.set_alarm(kParameterError, true);
+  write_ignored_ = true;
   return SdoAbort::None;
 }
 
@@ -54,6 +56,7 @@ void Application::bind() {
     return SdoAbort::None;
   });
   od.add_observer(obj::kOperatingParameters, 0, [this](OdEntry&, Origin) {
+    write_ignored_ = false;
     load_parameters();
     sample(node_.now(), false);
   });
@@ -73,7 +76,7 @@ void Application::bind() {
     return SdoAbort::None;
   });
   od.add_observer(obj::kPreset, 1, [this](OdEntry& e, Origin origin) {
-    if (origin != Origin::Sdo) return;
+    if (origin != Origin::Sdo || std::exchange(write_ignored_, false)) return;
     offset_ = cia406::linear_offset_for_preset(e.as<std::int32_t>(), raw_, config_);
     node_.od().set<std::int32_t>(obj::kOffset, 1, static_cast<std::int32_t>(offset_));
     sample(node_.now(), false);
@@ -216,8 +219,8 @@ void Application::sample(sim::Time now, bool evaluate_alarms) {
   if (signal_.scripted()) in.position = signal_.value(inputs_.position, sim::seconds(now));
   const Measurement m = measure(in, config_);
   if (m.valid) {
-    if (!valid_) motion_.reset(m.steps);  // (re)start: no speed spike from the jump
-    else if (evaluate_alarms) motion_.push(m.steps);
+    if (!valid_) motion_.reset(m.micrometres);  // (re)start: no speed spike from the jump
+    else if (evaluate_alarms) motion_.push(m.micrometres);
     steps_ = m.steps;
     raw_ = cia406::directed_raw(m.steps, config_);
   }
@@ -229,8 +232,9 @@ void Application::sample(sim::Time now, bool evaluate_alarms) {
   // Speed in 6005h:02 units (0.01 mm/s each); positive when 6020h rises [REC].
   double speed = 0.0;
   if (valid_) {
-    const double steps_per_s = motion_.speed() * (config_.decreasing ? -1.0 : 1.0);
-    speed = std::round(steps_per_s * 10.0 / settings_.speed_step);
+    // µm/s → units of 6005h:02 × 0.01 mm/s = 10 µm/s.
+    const double um_per_s = motion_.speed() * (config_.decreasing ? -1.0 : 1.0);
+    speed = std::round(um_per_s / (10.0 * settings_.speed_step));
   }
   cia406::publish(*speed_, cia406::saturate_i16(speed));
   if (evaluate_alarms) diagnostics_.set_alarm(kPositionError, !valid_);

@@ -59,6 +59,7 @@ class Application final : public canopen::Application {
   bool valid_ = false;
   bool eeprom_failing_ = false;
   bool reset_node_pending_ = false;
+  bool write_ignored_ = false;  // an out-of-range parameter was confirmed but not applied
   bool eeprom_check_pending_ = false;  // a failing EEPROM is found at start-up (6503h bit 12)
   sim::Time next_sample_{};
   canopen::OdEntry* position_ = nullptr;

@@ -21,7 +21,7 @@ Measurement measure(const MagnetInputs& in, const cia406::LinearConfig& config) 
   }
   if (in.fault_second_magnet && inside == 1) ++inside;
   if (inside != 1) return {};
-  return Measurement{true, cia406::steps_from_metres(seen, config)};
+  return Measurement{true, cia406::steps_from_metres(seen, config), std::llround(seen * 1e6)};
 }
 
 }  // namespace hlt1100

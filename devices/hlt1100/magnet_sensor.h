@@ -22,7 +22,8 @@ struct MagnetInputs {
 
 struct Measurement {
   bool valid = false;
-  std::int64_t steps = 0;  ///< along the rod, 0..N-1 (valid only)
+  std::int64_t steps = 0;        ///< along the rod, 0..N-1 (valid only)
+  std::int64_t micrometres = 0;  ///< the waveguide's finer internal reading (speed is derived from it)
 };
 
 Measurement measure(const MagnetInputs& in, const cia406::LinearConfig& config);

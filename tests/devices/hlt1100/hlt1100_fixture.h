@@ -9,7 +9,9 @@
 #include <string>
 #include <unistd.h>
 
+#include "devices/canopen/lss_slave.h"
 #include "devices/hlt1100/hlt1100_device.h"
+#include "devices/hlt1100/hlt1100_object_dictionary.h"
 #include "tests/support/canopen_harness.h"
 
 namespace hlt1100::test {
