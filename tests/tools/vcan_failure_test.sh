@@ -1,7 +1,8 @@
 #!/bin/bash
 # vcan-run never hangs and never reports a false success:
 #  - --timeout kills the command (or guest) and exits 124 with a message;
-#  - in qemu mode, a guest that cannot boot exits 125 with "guest did not finish".
+#  - in qemu mode, a guest that cannot boot or mount the share exits 125 with "guest did not
+#    finish", the failing step and the console tail.
 # usage: vcan_failure_test.sh /path/to/vcan-run
 set -u
 vcan_run=${1:?usage: $0 /path/to/vcan-run}
@@ -37,6 +38,13 @@ case $mode in
     grep -q 'guest did not finish' "$tmp/err" || fail "boot failure: no clear message"
     grep -q 'Kernel panic' "$tmp/err" || fail "boot failure: console tail missing"
     echo "boot failure: OK"
+    # A 9p mount that fails inside our init: reported with its VPLANT-GUEST-FAIL line.
+    VPLANT_VCAN_9P_CACHE=bogus "$vcan_run" --timeout 120 -- true >"$tmp/out" 2>"$tmp/err"
+    rc=$?
+    cat "$tmp/err"
+    [ "$rc" = 125 ] || fail "mount failure: exit code $rc, want 125"
+    grep -q "VPLANT-GUEST-FAIL: cannot mount the 9p share" "$tmp/err" || fail "mount failure: no clear message"
+    echo "mount failure: OK"
     ;;
   *) echo "boot failure: not applicable in native mode" ;;
 esac
