@@ -20,6 +20,7 @@ class Diagnostics {
   void syntax_error(int line, std::string reason);
   void warning(int line, std::string reason);
   bool has_errors() const { return errors_ > 0; }
+  std::size_t error_count() const { return static_cast<std::size_t>(errors_); }
   /// Errors and warnings in line order (stable: same line keeps discovery order).
   std::vector<EdsError> sorted() const;
   /// The first syntax error, else the error with the lowest line (nullptr if none).

@@ -170,6 +170,7 @@ class Reader {
   // --- objects ---
   void read_lists();
   void read_list(ListKind kind);
+  void read_list_entries(ListKind kind);
   void collect_sections();
   void cross_check();
   void build_object(std::uint16_t index, const ObjectSections& secs);
@@ -204,6 +205,7 @@ class Reader {
   std::map<const IniSection*, std::uint16_t> section_index_;  // object sections → their index
   std::set<std::uint16_t> failed_;  // objects with errors: their leftover keys are not "unknown"
   std::uint32_t dummy_mask_ = 0;
+  bool mandatory_list_broken_ = false;
 };
 
 // ---- metadata ------------------------------------------------------------------------------------
@@ -352,6 +354,13 @@ void Reader::read_lists() {
 }
 
 void Reader::read_list(ListKind kind) {
+  const std::size_t errors_before = diag_.error_count();
+  read_list_entries(kind);
+  // A broken mandatory list would also report its objects as missing: say only what is broken.
+  if (kind == ListKind::Mandatory && diag_.error_count() != errors_before) mandatory_list_broken_ = true;
+}
+
+void Reader::read_list_entries(ListKind kind) {
   const std::string name = list_name(kind);
   const IniSection* s = ini_.find(to_upper(name));
   if (!s) {
@@ -844,7 +853,7 @@ void Reader::apply_values(std::uint16_t index, const IniSection& s, unsigned cou
 
 void Reader::check_mandatory() {
   const IniSection* list = ini_.find("MANDATORYOBJECTS");
-  if (!list) return;  // reported as a missing section
+  if (!list || mandatory_list_broken_) return;  // already reported
   for (std::uint16_t index : {0x1000, 0x1001, 0x1018}) {
     if (!listed_.count(index)) {
       diag_.error(list->line, "mandatory object " + hex_index(index) + " missing (CiA 306: 0x1000, 0x1001, 0x1018)");

@@ -27,6 +27,10 @@ std::unique_ptr<EdsNode> EdsNode::load(const std::string& eds_path, const Device
   }
   canopen::NodePolicy policy;
   policy.store.path = options.store_path;
+  // The error history is as deep as the file's 0x1003 (sub 0 must never count more entries
+  // than the object has).
+  const auto* history = od->object(0x1003);
+  policy.emcy.history_depth = history && !history->entries.empty() ? history->entries.rbegin()->first : 0;
   const std::uint8_t id = options.node_id == 0 ? 1 : options.node_id;
   auto node = std::make_unique<canopen::Node>("eds", std::move(*od), std::move(policy), id);
   if (info.lss_supported) node->enable_lss(canopen::LssPolicy{});  // identity from 0x1018
