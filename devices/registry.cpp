@@ -2,6 +2,7 @@
 
 // Each product adds one include and one entry below.
 #include "devices/hlt1100/hlt1100_device.h"
+#include "devices/wdga/wdga_device.h"
 
 namespace devices {
 
@@ -9,6 +10,7 @@ const std::vector<Product>& products() {
   static const std::vector<Product> kProducts = [] {
     std::vector<Product> list;
     list.push_back(hlt1100::product());
+    list.push_back(wdga::product());
     return list;
   }();
   return kProducts;

@@ -74,6 +74,9 @@ class LssSlave {
   std::uint8_t configure_bit_rate(std::uint8_t table_index);
   /// Stores pending node-ID and bit rate in non-volatile memory; true on success.
   bool store_configuration();
+  /// Makes the pending bit rate the active one (devices that apply a configured rate at an NMT
+  /// reset instead of through "activate bit timing").
+  void activate_pending_bit_rate() { active_bit_rate_ = pending_bit_rate_; }
 
   State state() const { return state_; }
   std::uint8_t pending_node_id() const { return pending_node_id_; }

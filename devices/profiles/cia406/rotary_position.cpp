@@ -27,6 +27,11 @@ Int128 scaled_count(std::int64_t physical, const RotaryConfig& c) {
   return floor_div(directed * static_cast<Int128>(c.measuring_units_per_revolution), res);
 }
 
+Int128 within_turn(Int128 unwrapped_scaled, const RotaryConfig& c) {
+  if (c.multiturn) return unwrapped_scaled;
+  return floor_mod(unwrapped_scaled, static_cast<Int128>(c.effective_units_per_revolution()));
+}
+
 std::uint64_t output_position(Int128 scaled, Int128 offset, const RotaryConfig& c) {
   return static_cast<std::uint64_t>(floor_mod(scaled + offset, static_cast<Int128>(c.effective_range())));
 }

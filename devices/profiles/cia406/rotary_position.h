@@ -40,6 +40,10 @@ std::int64_t physical_count(double revolutions, const RotaryConfig& c);
 /// scaled by MUR / resolution (floor). Unbounded for multiturn; in [0, MUR) for singleturn.
 Int128 scaled_count(std::int64_t physical, const RotaryConfig& c);
 
+/// The count of the output turn: a multiturn count as it is, a singleturn count reduced to one
+/// revolution (used when the scaled count was computed unwrapped, e.g. for filtering).
+Int128 within_turn(Int128 unwrapped_scaled, const RotaryConfig& c);
+
 /// Output position X = (S + offset) mod range, in [0, range).
 std::uint64_t output_position(Int128 scaled, Int128 offset, const RotaryConfig& c);
 

@@ -1,0 +1,48 @@
+// The WDGA as a vplant device, variants "multiturn" (default) and "singleturn". Ports (SI):
+// angle (rad, continuous and unbounded, clockwise positive), speed (rad/s, its derivative),
+// temperature (°C). Faults: position_error, eeprom_error, can_error_passive, can_overrun (an
+// event), bus_off, temperature_sensor_failure, over_temperature. A power cycle keeps every turn
+// the shaft made (EnDra).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "devices/device.h"
+#include "devices/registry.h"
+#include "devices/wdga/wdga_application.h"
+#include "devices/wdga/wdga_settings.h"
+
+namespace wdga {
+
+/// The status LED (not visible on the bus; CiA 303-3 patterns, manual §3.3).
+enum class Led { Off, RedGreenFlicker, GreenBlinking, GreenSingleFlash, Green, Red };
+
+class Device final : public devices::Device {
+ public:
+  static std::unique_ptr<Device> make(const devices::DeviceOptions& options, std::string& error);
+
+  canopen::Node& node() override { return *node_; }
+  sim::PortList ports() override;
+  std::vector<devices::FaultInfo> faults() const override;
+  std::string inject_fault(std::string_view name, bool active) override;
+  void power_off() override;
+  void power_on(sim::Time now) override;
+
+  Application& application() { return *app_; }
+  const Settings& settings() const { return *settings_; }
+  Led led() const;
+
+ private:
+  Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path);
+
+  std::unique_ptr<Settings> settings_;
+  std::unique_ptr<canopen::Node> node_;
+  std::unique_ptr<Application> app_;
+};
+
+canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path);
+devices::Product product();
+
+}  // namespace wdga
