@@ -84,6 +84,9 @@ struct PdoPolicy {
   AsyncTriggers type255{};
   /// Send each event-driven TPDO once when entering Operational.
   bool send_async_on_operational = false;
+  /// Without the initial transmission: change detection starts from the data present when
+  /// Operational is entered (default: the first check counts as a change and sends once).
+  bool change_baseline_on_operational = false;
   /// Type 255 with event timer 0 means "PDO off" (some vendors' tables): nothing is sent.
   bool type255_off_without_timer = false;
   /// Remote request whose DLC differs from the TPDO length.

@@ -387,6 +387,9 @@ void PdoService::on_enter_operational(sim::Time now) {
     if (node_.policy().pdo.send_async_on_operational && t.type >= 254) {
       t.event_pending = true;
       try_send_event(t, now);
+    } else if (node_.policy().pdo.change_baseline_on_operational && t.type >= 254 && t.valid && t.mapping.length != 0) {
+      sample(t, t.last_sent);
+      t.sent_once = true;
     }
   }
 }

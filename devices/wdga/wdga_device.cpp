@@ -37,6 +37,7 @@ canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path
   p.pdo.type255 = {.on_change = false, .after_rpdo = false, .on_timer = true};
   p.pdo.type255_off_without_timer = true;  // FFh + timer 0 = "PDO deaktiviert" [M Tab. 8.46]
   p.pdo.send_async_on_operational = s.initial_tpdo;
+  p.pdo.change_baseline_on_operational = !s.initial_tpdo;
   p.pdo.tpdo_types.reset();
   for (int t = 0; t <= 240; ++t) p.pdo.tpdo_types.set(t);
   p.pdo.tpdo_types.set(254);

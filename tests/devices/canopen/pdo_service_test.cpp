@@ -192,3 +192,13 @@ TEST_F(PdoTest, RestartEventTimerCountsFromNow) {
   h.run_ms(2);
   EXPECT_EQ(h.take().size(), 1u);
 }
+
+TEST_F(PdoTest, ChangeBaselineOnOperationalSendsOnlyRealChanges) {
+  h.node().policy().pdo.change_baseline_on_operational = true;
+  operational();
+  h.run_ms(10);
+  EXPECT_TRUE(h.take().empty());
+  h.node().od().set<std::uint16_t>(0x6000, 0, 0x0102);
+  h.run_ticks(1);
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x02, 0x01, 0x55})});
+}
