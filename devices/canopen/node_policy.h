@@ -31,6 +31,9 @@ struct SdoPolicy {
   bool segmented_download = true;
   /// A segmented transfer whose total differs from the object size (numeric types).
   SdoAbort segmented_size_mismatch = SdoAbort::TypeMismatch;
+  /// Segmented downloads of numeric objects must have exactly the object's size, even when
+  /// expedited ones are lenient (SizeMode::Lenient / ExcessMustBeZero).
+  bool segmented_exact_size = false;
   /// A download to a data type definition (DEFTYPE/DEFSTRUCT object, e.g. the dummy types
   /// 0x0002-0x0007 an EDS declares in [DummyUsage]): CiA 301 §7.4.7 entries that describe a type
   /// and hold no parameter, so the access itself is unsupported (reading gives the length).

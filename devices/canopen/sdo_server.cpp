@@ -146,6 +146,9 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
     if (mismatch != SdoAbort::None) return abort(index, sub, mismatch);
     return abort(index, sub, expected_size_ > fixed ? SdoAbort::LengthTooHigh : SdoAbort::LengthTooLow);
   }
+  if (size_indicated && fixed != 0 && expected_size_ != fixed && node_.policy().sdo.segmented_exact_size) {
+    return abort(index, sub, node_.policy().sdo.segmented_size_mismatch);
+  }
   if (size_indicated && fixed == 0 && e->max_length != 0 && expected_size_ > e->max_length) {
     return abort(index, sub, SdoAbort::LengthTooHigh);
   }
@@ -176,7 +179,8 @@ void SdoServer::download_segment(const std::uint8_t* req) {
     return abort(index_, sub_, node_.policy().sdo.segmented_size_mismatch);
   }
   const std::size_t fixed = type_size(entry_->type);
-  if (fixed != 0 && buffer_.size() != fixed && node_.policy().sdo.size_mode == SdoPolicy::SizeMode::Strict) {
+  if (fixed != 0 && buffer_.size() != fixed &&
+      (node_.policy().sdo.size_mode == SdoPolicy::SizeMode::Strict || node_.policy().sdo.segmented_exact_size)) {
     return abort(index_, sub_, node_.policy().sdo.segmented_size_mismatch);
   }
   if (auto a = fit_size(*entry_, buffer_, true); a != SdoAbort::None) return abort(index_, sub_, a);

@@ -179,13 +179,11 @@ void Application::bind_pdo_rules() {
 
 // ---- storage ------------------------------------------------------------------------------
 
-void Application::save_offset() {
+void Application::stage_offset() {
   auto& nv = node_.store().memory();
   canopen::Bytes bytes(8);
   canopen::encode_unsigned(static_cast<std::uint64_t>(static_cast<std::int64_t>(measurement_.offset())), bytes);
   nv.put(kOffsetCellIndex, kOffsetCellSub, canopen::ParameterStore::Value{false, bytes});
-  std::string error;
-  (void)nv.save(error);
 }
 
 void Application::bind_storage() {
@@ -214,9 +212,17 @@ void Application::bind_storage() {
         CheckStage::State);
   }
   for (std::uint8_t sub : {1, 3}) {
-    od.add_observer(obj::kStore, sub, [this](OdEntry&, Origin origin) {
-      if (origin == Origin::Sdo) save_offset();
-    });
+    // The offset cell goes into the memory before the stack writes the file: one write.
+    od.add_check(
+        obj::kStore, sub,
+        [this](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+          if (origin == Origin::Sdo && !eeprom_failing_ &&
+              canopen::decode_unsigned(data) == canopen::StoreRestore::kSaveSignature) {
+            stage_offset();
+          }
+          return SdoAbort::None;
+        },
+        CheckStage::State);
   }
   // Customer data: saved on write, untouched by restore [M §7.12].
   for (std::uint8_t sub = 1; sub <= 8; ++sub) {

@@ -47,7 +47,7 @@ class Application final : public canopen::Application {
   void bind_configuration_stamp();
   void apply_cyclic_timer();
   void eeprom_error(std::uint8_t info2);
-  void save_offset();
+  void stage_offset();
 
   canopen::Node& node_;
   const Settings& settings_;

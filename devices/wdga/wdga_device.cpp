@@ -27,6 +27,7 @@ canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path
   canopen::NodePolicy p;
   p.sdo.pad_short_requests = true;
   p.sdo.size_mode = canopen::SdoPolicy::SizeMode::ExcessMustBeZero;  // e.g. 23h to U8 6301h:01 [M Tab. 8.68]
+  p.sdo.segmented_exact_size = true;
   p.nmt.require_dlc_2 = false;
   p.nmt.boot_delay = sim::milliseconds(s.boot_delay_ms);
   p.error_control.guard_while_heartbeat = false;

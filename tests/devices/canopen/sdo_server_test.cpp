@@ -204,3 +204,14 @@ TEST(SdoTypeDefinition, TheAbortCodeIsAKnob) {
   h.send(0x605, {0x2F, 0x05, 0x00, 0x00, 0x10, 0, 0, 0});
   EXPECT_EQ(h.take(), Frames{resp({0x80, 0x05, 0x00, 0x00, 0x02, 0x00, 0x01, 0x06})});  // 0x06010002
 }
+
+TEST(SdoSegmentedExactSize, LenientExpeditedButExactSegmented) {
+  canopen::NodePolicy p;
+  p.sdo.size_mode = canopen::SdoPolicy::SizeMode::ExcessMustBeZero;
+  p.sdo.segmented_exact_size = true;
+  vtest::CanopenHarness h(vtest::make_generic_od(), p, 5);
+  h.power_on();
+  EXPECT_EQ(h.write(0x2000, 0, 7, 4), 0u);                      // expedited: excess zero bytes accepted
+  EXPECT_EQ(h.download(0x2000, 0, {7, 0}), 0x06070010u);        // segmented with a size: refused at initiate
+  EXPECT_EQ(h.download(0x2006, 0, {1, 2, 3, 4, 5, 6, 7, 8}), 0u);  // exact: fine
+}
