@@ -245,10 +245,14 @@ void Application::process(sim::Time now, sim::Duration) {
     eeprom_check_pending_ = false;
     diagnostics_.set_alarm(kEepromError, true);
   }
-  if (now >= next_sample_) {
-    sample(now, true);
-    next_sample_ = now + sim::milliseconds(settings_.sample_period_ms);
+  // One sample per sample period, whatever the scheduler's tick.
+  const auto period = sim::milliseconds(settings_.sample_period_ms);
+  int guard = 0;
+  while (next_sample_ <= now && guard++ < 1000) {
+    sample(next_sample_, true);
+    next_sample_ += period;
   }
+  if (next_sample_ <= now) next_sample_ = now + period;
   diagnostics_.process();
 }
 
