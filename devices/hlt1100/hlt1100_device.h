@@ -38,6 +38,8 @@ class Device final : public devices::Device {
 
 /// The node policy the manual implies (abort codes, silent save, LSS services, PDO triggers).
 canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path);
+/// The EDS of the device with its default settings (generated from the emulated dictionary).
+std::string eds();
 /// The registry entry "hlt1100".
 devices::Product product();
 

@@ -43,6 +43,8 @@ class Device final : public devices::Device {
 };
 
 canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path);
+/// The EDS of a variant ("multiturn", "singleturn"; "" = multiturn) with default settings.
+std::string eds(const std::string& variant);
 devices::Product product();
 
 }  // namespace wdga

@@ -29,7 +29,9 @@ struct Settings {
   bool cobid_no_rtr_bit = true;         ///< TPDO COB-IDs read back with bit 30 set (A-27)
   bool cyclic_timer_alias = false;      ///< 6200h mirrors 1800h:05 instead of pacing TPDO1 (A-15)
   bool initial_tpdo = true;             ///< event-driven TPDOs once on entering Operational
-  bool error_history_count_u32 = true;  ///< 2502h:00 is UNSIGNED32 as printed (A-18)
+  /// 2502h:00 as the UNSIGNED32 the table prints. Off by default: CiA 301 requires
+  /// UNSIGNED8 for a sub-index 0 (the EDS would not be conformant), as 2503h/2504h have it.
+  bool error_history_count_u32 = false;
   bool speed_physical_units = false;    ///< speed in physical steps (16384/rev) instead of scaled (A-22)
   std::uint16_t position_error_emcy = 0;  ///< EMCY code for 6503h bit 0 (0 = none; A-37 suggests 0x1000)
   bool strict_cobid = false;            ///< TPDO COB-IDs in CiA 301's restricted ranges abort
