@@ -23,6 +23,7 @@ std::string parse_settings(const std::map<std::string, std::string>& text, Setti
   r.get_int("manufacturer_min", s.manufacturer_min, INT32_MIN, INT32_MAX);
   r.get_int("manufacturer_max", s.manufacturer_max, -1, INT32_MAX);
   r.get_uint("speed_step", s.speed_step, 1, 0xFFFFFFFF);
+  r.get_uint("factory_node_id", s.node_id, 1, 255);
   std::uint64_t kbit = s.bit_rate_kbit;
   r.get("bit_rate_kbit", kbit, 0, 1000);
   s.bit_rate_kbit = static_cast<unsigned>(kbit);
@@ -59,6 +60,7 @@ std::string parse_settings(const std::map<std::string, std::string>& text, Setti
   bool rate_ok = false;
   for (unsigned k : kRates) rate_ok = rate_ok || k == s.bit_rate_kbit;
   if (!rate_ok) return "setting bit_rate_kbit=" + std::to_string(s.bit_rate_kbit) + ": the HLT 1100 supports 20, 50, 125, 250, 500, 800, 1000";
+  if (s.node_id > 127 && s.node_id != 255) return "setting factory_node_id: 1..127, or 255 for an unconfigured sensor";
   if (s.manufacturer_max > 0 && s.manufacturer_max < s.manufacturer_min) return "setting manufacturer_max: below manufacturer_min";
   cia406::ScriptedInput probe;
   if (auto e = probe.parse(s.signal); !e.empty()) return "setting signal: " + e;

@@ -25,7 +25,7 @@ struct Settings {
   std::uint32_t speed_step = 10;                ///< 6005h:02, units of 0.01 mm/s
 
   // Factory bus settings (LSS only on the device).
-  std::uint8_t node_id = 1;
+  std::uint8_t node_id = 1;  ///< factory node-ID (setting factory_node_id; 255 = unconfigured)
   unsigned bit_rate_kbit = 250;
 
   // Timing.

@@ -82,6 +82,13 @@ TEST_F(Nmt, StoppedAnswersNoSdoSendsNoPdoOrEmcy) {
   turn_to(0.5);
   h().run_ms(61000);
   EXPECT_TRUE(h().take().empty());
+  // The heartbeat (NMT still works in Stopped) carries 04h.
+  h().nmt(0x80, 0x7F);
+  ASSERT_EQ(h().write(0x1017, 0, 100, 2), 0u);
+  h().nmt(0x02, 0x7F);
+  h().take();
+  h().run_ms(100);
+  EXPECT_EQ(h().take(), Frames{Frame(0x77F, {0x04})});
 }
 
 TEST_F(Nmt, HeartbeatEveryPeriodWithTheState) {
