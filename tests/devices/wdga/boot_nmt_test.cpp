@@ -87,7 +87,7 @@ TEST_F(Nmt, StoppedAnswersNoSdoSendsNoPdoOrEmcy) {
   ASSERT_EQ(h().write(0x1017, 0, 100, 2), 0u);
   h().nmt(0x02, 0x7F);
   h().take();
-  h().run_ms(100);
+  h().run_ms(101);
   EXPECT_EQ(h().take(), Frames{Frame(0x77F, {0x04})});
 }
 
