@@ -118,6 +118,7 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
   const std::uint16_t index = index_of(req);
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
+  if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
   if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
   if (!e->writable()) return abort(index, sub, node_.od().access_aborts().write_read_only);
 
@@ -184,6 +185,7 @@ void SdoServer::initiate_upload(const std::uint8_t* req) {
   const std::uint16_t index = index_of(req);
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
+  if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
   if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
   if (auto a = node_.od().read(*e, Origin::Sdo); a != SdoAbort::None) return abort(index, sub, a);
   const std::size_t size = e->value.size();
