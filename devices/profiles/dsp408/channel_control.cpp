@@ -1,5 +1,7 @@
 #include "devices/profiles/dsp408/channel_control.h"
 
+#include "devices/profiles/dsp408/od_value.h"
+
 namespace dsp408 {
 
 using canopen::CheckStage;
@@ -49,7 +51,7 @@ void ChannelControl::install() {
   });
 
   od_.add_read_hook(objects_.status_word, 0, [this](OdEntry& e, Origin) {
-    e.assign<std::uint16_t>(status_word());
+    put(e, status_word());
     return SdoAbort::None;
   });
 
@@ -92,6 +94,8 @@ std::uint16_t ChannelControl::status_word() const {
   return dsp408::status_word(dsm_.state(), f);
 }
 
-void ChannelControl::publish_status() { od_.set<std::uint16_t>(objects_.status_word, 0, status_word()); }
+void ChannelControl::publish_status() {
+  if (auto* e = od_.entry(objects_.status_word, 0)) put(*e, status_word());
+}
 
 }  // namespace dsp408

@@ -43,6 +43,23 @@ double CommandValueRamp::step(double target, double dt) {
   return output_;
 }
 
+double CommandValueRamp::time_to(double target) const {
+  auto seconds = [this](double time, double distance) { return time > 0 ? distance / full_scale_ * time : 0.0; };
+  double r = output_, t = 0;
+  if (r > 0 && target < r) {  // A side falling (to the target or to 0)
+    const double stop = std::max(target, 0.0);
+    t += seconds(times_.a_down, r - stop);
+    r = stop;
+  } else if (r < 0 && target > r) {  // B side falling
+    const double stop = std::min(target, 0.0);
+    t += seconds(times_.b_down, stop - r);
+    r = stop;
+  }
+  if (target > r) t += seconds(times_.a_up, target - r);
+  if (target < r) t += seconds(times_.b_up, r - target);
+  return t;
+}
+
 double RateLimiter::step(double target, double dt) {
   if (target > output_) {
     output_ = rise_ > 0 ? std::min(target, output_ + rise_ * dt) : target;

@@ -31,8 +31,11 @@ class CommandValueRamp {
   void reset(double value = 0) { output_ = value; }
 
   double output() const { return output_; }
-  /// "Ramp running" (status bit 9): the output has not reached the target.
-  bool running(double target) const { return output_ != target; }
+  /// "Ramp running" (status bit 9): the output has not reached the target and will take time
+  /// to (a quadrant with time 0 is a step, not a running ramp).
+  bool running(double target) const { return enabled_ && output_ != target && time_to(target) > 0; }
+  /// Seconds the ramp needs from its output to `target`.
+  double time_to(double target) const;
 
  private:
   double rate(double seconds) const;  // units per second; 0 = step

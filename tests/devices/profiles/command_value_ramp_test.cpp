@@ -67,3 +67,15 @@ TEST(RateLimiter, RiseAndFallRates) {
   l.step(-7, 0.001);
   EXPECT_DOUBLE_EQ(l.output(), -7);
 }
+
+TEST(CommandValueRamp, RunningOnlyWhileTheRampTakesTime) {
+  CommandValueRamp r;
+  r.set_times({.a_up = 1.0, .a_down = 0});
+  EXPECT_TRUE(r.running(100));
+  EXPECT_NEAR(r.time_to(8192), 0.5, 1e-12);
+  r.reset(100);
+  EXPECT_FALSE(r.running(0));  // A down is a step
+  EXPECT_FALSE(r.running(100));
+  r.set_enabled(false);
+  EXPECT_FALSE(r.running(200));
+}
