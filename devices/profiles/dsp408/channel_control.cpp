@@ -36,16 +36,17 @@ canopen::WriteCheck ChannelControl::mode_lock() const {
   };
 }
 
+canopen::WriteCheck ChannelControl::local_lock() const {
+  return [this](const OdEntry&, std::span<std::uint8_t>, Origin origin) {
+    if (from_bus(origin) && source_ != ControlSource::Bus) return SdoAbort::DataLocalControl;
+    return SdoAbort::None;
+  };
+}
+
 void ChannelControl::install() {
   const auto cw = objects_.control_word;
-  od_.add_check(
-      cw, 0,
-      [this](const OdEntry&, std::span<std::uint8_t>, Origin origin) {
-        // A control word under local or PASO control: SDO gets 0x08000021, an RPDO is dropped.
-        if (from_bus(origin) && source_ != ControlSource::Bus) return SdoAbort::DataLocalControl;
-        return SdoAbort::None;
-      },
-      CheckStage::State);
+  // A control word under local or PASO control: SDO gets 0x08000021, an RPDO is dropped.
+  od_.add_check(cw, 0, local_lock(), CheckStage::State);
   od_.after_write<std::uint16_t>(cw, 0, [this](std::uint16_t value, Origin origin) {
     if (from_bus(origin)) dsm_.write_control_word(value);
   });
@@ -55,6 +56,12 @@ void ChannelControl::install() {
     return SdoAbort::None;
   });
 
+  if (objects_.local_locks_modes) {
+    for (std::uint16_t index : {objects_.device_mode, objects_.control_mode}) {
+      if (index == 0) continue;
+      od_.add_check(index, 0, local_lock(), CheckStage::State);
+    }
+  }
   for (std::uint16_t index : {objects_.device_mode, objects_.control_mode, objects_.device_local}) {
     if (index != 0) od_.add_check(index, 0, mode_lock(), CheckStage::State);
   }

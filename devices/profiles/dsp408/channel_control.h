@@ -26,6 +26,9 @@ struct ChannelObjects {
   std::uint16_t device_mode = 0x6042;   ///< 0 = the product has no device mode object
   std::uint16_t control_mode = 0x6043;
   std::uint16_t device_local = 0x604F;
+  /// Under local or PASO control the control mode (and device mode) are refused with
+  /// 0x08000021 too, checked before the device-state lock (DSV; the MD2 manual does not say so).
+  bool local_locks_modes = false;
 
   /// The same objects of channel `c` (1-based): base + 0x800·(c − 1).
   static ChannelObjects for_channel(int c, bool with_device_mode);
@@ -60,6 +63,8 @@ class ChannelControl {
 
   /// Write check for objects that may change only in INIT or DISABLED (modes): 0x08000022.
   canopen::WriteCheck mode_lock() const;
+  /// Write check for objects the bus may not write under local or PASO control: 0x08000021.
+  canopen::WriteCheck local_lock() const;
   bool modes_changeable() const { return state() == DeviceState::Init || state() == DeviceState::Disabled; }
 
  private:

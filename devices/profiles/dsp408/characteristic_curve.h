@@ -19,6 +19,7 @@ class CharacteristicCurve {
   CharacteristicCurve();  ///< identity: x_k = y_k = k/10
   void set_point(std::size_t k, Point p) { points_[k] = p; }
   const Point& point(std::size_t k) const { return points_[k]; }
+  Point& point(std::size_t k) { return points_[k]; }
   /// y for demand u (points taken in order of x).
   double map(double u) const;
 
