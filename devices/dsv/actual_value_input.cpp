@@ -54,7 +54,7 @@ double ActualValueInput::value(std::int8_t m) const {
   const double c_max = static_cast<double>(p_.value(s.max_interface)) * kAdcCounts / fs;
   if (c_max <= c_min) return min_ref;  // no interface range configured yet
   const double signal_raw = signal_ * 1000.0;  // mV or µA
-  const double count = std::floor(signal_raw * kAdcCounts / fs);
+  const double count = std::floor(signal_raw * kAdcCounts / fs + 1e-9);  // exact at the steps
   return std::round(min_ref + (count - c_min) * (max_ref - min_ref) / (c_max - c_min));
 }
 

@@ -99,6 +99,7 @@ void Dsv::install_device_hooks() {
     }
   }
   auto refresh = [this](OdEntry&, Origin) {
+    input_->sample(actual_value_, actual_cable_break_ >= 0.5 || faults_.actual_cable_break);
     chain_->publish_measurements();
     return SdoAbort::None;
   };

@@ -71,6 +71,7 @@ void Md2Channel::install(canopen::ObjectDictionary& od) {
   for (int i = 0; i < 3; ++i) {
     if (!actuals_[i]) continue;
     auto refresh = [this](OdEntry&, Origin) {
+      last_actual_ = actual_raw();  // the feedback as it is now (set between two cycles)
       publish_measurements();
       return SdoAbort::None;
     };
