@@ -120,6 +120,9 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
   OdEntry* e = nullptr;
   if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
   if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
+  if (const auto code = node_.od().object(index)->code; code == ObjectCode::DefType || code == ObjectCode::DefStruct) {
+    return abort(index, sub, node_.policy().sdo.type_definition_write);
+  }
   if (!e->writable()) return abort(index, sub, node_.od().access_aborts().write_read_only);
 
   const bool expedited = req[0] & 0x02;
