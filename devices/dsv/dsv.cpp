@@ -53,6 +53,7 @@ Dsv::Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
   pdo.type255.after_rpdo = false;
   pdo.width_conversion = options_.m4_tpdo_six_bytes;
   pdo.parameters_preop_only = false;  // "can be changed in any way required by the user"
+  pdo.dummy_mapping = false;          // the mapping is fixed
 
   dsp408::ChannelObjects objects = dsp408::ChannelObjects::for_channel(1, false);
   objects.local_locks_modes = true;
