@@ -1,12 +1,14 @@
 #include "devices/registry.h"
 
 // Each product adds one include and one entry below.
+#include "devices/vtvpcd/product.h"
 
 namespace devices {
 
 const std::vector<Product>& products() {
   static const std::vector<Product> kProducts = [] {
     std::vector<Product> list;
+    list.push_back(vtvpcd::product());
     return list;
   }();
   return kProducts;
