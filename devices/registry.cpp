@@ -1,6 +1,9 @@
 #include "devices/registry.h"
 
 // Each product adds one include and one entry below.
+#include "devices/dsv/dsv_product.h"
+#include "devices/md2/md2_product.h"
+#include "devices/vtvpcd/product.h"
 #include "devices/hlt1100/hlt1100_device.h"
 #include "devices/wdga/wdga_device.h"
 
@@ -9,6 +12,9 @@ namespace devices {
 const std::vector<Product>& products() {
   static const std::vector<Product> kProducts = [] {
     std::vector<Product> list;
+    list.push_back(md2::product());
+    list.push_back(dsv::product());
+    list.push_back(vtvpcd::product());
     list.push_back(hlt1100::product());
     list.push_back(wdga::product());
     return list;
