@@ -177,6 +177,7 @@ TEST_F(PdoTest, PdoSwitchedOffByTheDeviceIsSilentButReadsValid) {
   h.take();
   h.send(0x080, {});
   EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x78, 0x56, 0x34, 0x12})});
+}
 
 TEST(PdoPolicyKnobs, TpdoRemoteRequestsCanBeIgnored) {
   canopen::NodePolicy policy;
