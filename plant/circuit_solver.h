@@ -18,6 +18,7 @@
 
 #include <Eigen/Dense>
 
+#include <cstdint>
 #include <vector>
 
 #include "plant/circuit_state.h"
@@ -44,12 +45,17 @@ class CircuitSolver {
   /// Advances pressures, velocities and positions by h (components have advanced already).
   void step(double h);
 
+  /// Physics steps taken, counting the halves of steps the error control split.
+  std::uint64_t steps_taken() const { return steps_taken_; }
+
   void set_energy_accounting(bool on);
   const EnergyLedger& energy() const { return ledger_; }
 
  private:
   void evaluate(const CircuitState& s, Equations::Mode mode);
   void account_power(const CircuitState& s, std::array<double, kEnergyKinds>& power);
+  void advance(double h, int depth);
+  double error_norm(double h) const;
   void classify_bodies();
   void classify_nodes();
   void settle_vapour();
@@ -84,6 +90,7 @@ class CircuitSolver {
   Eigen::MatrixXd g_, j_, w_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
 
+  std::uint64_t steps_taken_ = 0;
   bool accounting_ = false;
   EnergyLedger ledger_;
 };

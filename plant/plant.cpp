@@ -126,7 +126,6 @@ void Plant::step(sim::Time /*now*/, sim::Duration dt) {
     for (auto& c : components_) c->advance(h_);
     solver_->step(h_);
   }
-  steps_ += static_cast<std::uint64_t>(substeps_);
   for (auto& c : components_) c->publish(solver_->state(), tick);
 }
 
@@ -160,6 +159,8 @@ std::optional<double> Plant::parameter(std::string_view qualified_name) const {
   if (index < 0) return std::nullopt;
   return c->parameter(index);
 }
+
+std::uint64_t Plant::physics_steps() const { return solver_->steps_taken(); }
 
 void Plant::set_energy_accounting(bool on) { solver_->set_energy_accounting(on); }
 const EnergyLedger& Plant::energy() const { return solver_->energy(); }

@@ -51,8 +51,9 @@ class Plant final : public sim::Steppable {
   const EnergyLedger& energy() const;
 
   const Component* component(std::string_view name) const;
-  double physics_step() const { return h_; }                ///< s, of the last tick
-  std::uint64_t physics_steps() const { return steps_; }    ///< since construction
+  double physics_step() const { return h_; }  ///< s, nominal, of the last tick
+  /// Physics steps since construction, including those the error control split into halves.
+  std::uint64_t physics_steps() const;
 
  private:
   Component* find(std::string_view name) const;
@@ -65,7 +66,6 @@ class Plant final : public sim::Steppable {
   double h_ = 0.0;
   int substeps_ = 0;
   sim::Duration configured_for_{0};
-  std::uint64_t steps_ = 0;
 };
 
 }  // namespace plant

@@ -58,6 +58,7 @@ DofId RigidBodyWorld::add_slider(double lower, double upper, double initial_posi
   dJointSetSliderAxis(d->joint, 1, 0, 0);  // zero position = where the body is now (origin)
   dJointSetSliderParam(d->joint, dParamVel, 0);
   dJointSetSliderParam(d->joint, dParamFMax, 0);
+  dJointSetSliderParam(d->joint, dParamCFM, 0);     // a held body stays exactly at rest
   dJointSetSliderParam(d->joint, dParamBounce, 0);  // inelastic stops
   dJointSetSliderParam(d->joint, dParamStopERP, 0);  // penetration is projected out in step()
   dJointSetFeedback(d->joint, &d->feedback);
@@ -80,6 +81,7 @@ DofId RigidBodyWorld::add_hinge(double initial_angle) {
   dJointSetHingeAxis(d->joint, 0, 0, 1);  // zero angle = the body's orientation now
   dJointSetHingeParam(d->joint, dParamVel, 0);
   dJointSetHingeParam(d->joint, dParamFMax, 0);
+  dJointSetHingeParam(d->joint, dParamCFM, 0);
   dJointSetFeedback(d->joint, &d->feedback);
   // Rotate exactly about the hinge axis each step (no small-angle quaternion update error).
   dBodySetFiniteRotationMode(d->body, 1);
