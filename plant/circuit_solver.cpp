@@ -12,7 +12,7 @@
 namespace plant {
 namespace {
 
-constexpr double kGamma = 1.0 + 1.0 / std::numbers::sqrt2;
+constexpr double kGamma = 1.0 - 1.0 / std::numbers::sqrt2;
 // A body slower than this (m/s or rad/s) counts as at rest: ODE's stiction motor leaves
 // residual speeds many orders of magnitude below it.
 constexpr double kRestSpeed = 1e-6;

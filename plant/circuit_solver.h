@@ -2,11 +2,15 @@
 // (they are stiff: a cylinder chamber's pressure settles in microseconds), body positions in ODE.
 //
 // Method: ROS2, the two-stage L-stable Rosenbrock method of Verwer, Spee, Blom and Hundsdorfer
-// (SIAM J. Sci. Comput. 20, 1999), with gamma = 1 + 1/sqrt(2):
+// (SIAM J. Sci. Comput. 20, 1999):
 //     W = I - gamma h J,   W k1 = f(y),   W k2 = f(y + h k1) - 2 k1,   y' = y + h (3/2 k1 + 1/2 k2)
-// Second order, L-stable (stiff modes are damped, not rung), one LU of W per step, and second order
-// even with an inexact Jacobian (it is a W-method), which keeps it robust at the kinks of the
-// models. y = [node pressures; body velocities], f = [beta(p)/V * net inflow; net force / mass].
+// Second order and L-stable for gamma = 1 +- 1/sqrt(2) (stiff modes are damped, not rung); one LU
+// of W per step; second order even with an inexact Jacobian (a W-method), which keeps it robust at
+// the models' kinks. We take gamma = 1 - 1/sqrt(2): still A- and L-stable (gamma >= 1/4), and far
+// more accurate on the lightly damped mass-on-oil-spring oscillations (at w h = 0.34 its phase
+// error is -0.5 % and amplitude loss 0.005 % per step, against +7 % and 3.4 % for 1 + 1/sqrt(2)).
+// y = [node pressures; body velocities], f = [beta(p)/V * net inflow; net force / mass]. Steps
+// whose embedded error estimate is too large are halved (see advance()).
 //
 // Coupling to ODE: the solver predicts the step's end velocities, hands ODE the force that
 // produces exactly that change (plus the dry friction, which ODE applies itself as a

@@ -135,8 +135,6 @@ Component* Plant::find(std::string_view name) const {
   return nullptr;
 }
 
-const Component* Plant::component(std::string_view name) const { return find(name); }
-
 double* Plant::port(std::string_view qualified_name) const {
   const sim::Port* p = sim::find_port(ports_, qualified_name);
   return p != nullptr ? p->value : nullptr;

@@ -50,7 +50,6 @@ class Plant final : public sim::Steppable {
   void set_energy_accounting(bool on);
   const EnergyLedger& energy() const;
 
-  const Component* component(std::string_view name) const;
   double physics_step() const { return h_; }  ///< s, nominal, of the last tick
   /// Physics steps since construction, including those the error control split into halves.
   std::uint64_t physics_steps() const;

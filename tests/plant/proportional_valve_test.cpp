@@ -17,13 +17,13 @@ PlantDescription valve_bench(double preload, double full) {
   d.add("fluid", "oil");
   d.add("tank", "supply", {{"pressure", 100 * kBar}});
   d.add("tank", "tank");
-  d.add("volume", "a", {{"volume", 1e-4}});
+  d.add("tank", "load");  // A drains to a tank: P->A flows whenever that edge is open
   d.add("volume", "b", {{"volume", 1e-4}});
   d.add("proportional_valve", "valve",
         {{"current_preload", preload}, {"current_full", full}, {"spool_natural_frequency", 20.0}, {"spool_damping", 0.8}});
   d.connect("p", {"supply.port", "valve.P"});
   d.connect("t", {"tank.port", "valve.T"});
-  d.connect("a", {"valve.A", "a.port"});
+  d.connect("a", {"valve.A", "load.port"});
   d.connect("b", {"valve.B", "b.port"});
   return d;
 }
