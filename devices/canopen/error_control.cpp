@@ -1,0 +1,80 @@
+#include "devices/canopen/error_control.h"
+
+#include "devices/canopen/node.h"
+
+namespace canopen {
+
+namespace {
+constexpr std::uint16_t kGuardTime = 0x100C;
+constexpr std::uint16_t kLifeTimeFactor = 0x100D;
+constexpr std::uint16_t kProducerHeartbeat = 0x1017;
+}  // namespace
+
+ErrorControl::ErrorControl(Node& node) : node_(node) {}
+
+void ErrorControl::bind_objects() {
+  auto& od = node_.od();
+  if (od.entry(kProducerHeartbeat, 0)) {
+    // A new period takes effect at once: first heartbeat one period after the write; 0 stops.
+    od.add_observer(kProducerHeartbeat, 0, [this](OdEntry&, Origin) {
+      next_heartbeat_ = node_.now() + sim::milliseconds(heartbeat_period_ms());
+    });
+  }
+  for (std::uint16_t idx : {kGuardTime, kLifeTimeFactor}) {
+    if (od.entry(idx, 0)) {
+      od.add_observer(idx, 0, [this](OdEntry&, Origin) {
+        if (life_time_ms() == 0) armed_ = false;
+      });
+    }
+  }
+}
+
+std::uint16_t ErrorControl::heartbeat_period_ms() const {
+  const auto* e = node_.od().entry(kProducerHeartbeat, 0);
+  return e ? e->as<std::uint16_t>() : 0;
+}
+
+std::uint32_t ErrorControl::life_time_ms() const {
+  const auto* gt = node_.od().entry(kGuardTime, 0);
+  const auto* lf = node_.od().entry(kLifeTimeFactor, 0);
+  if (!gt || !lf) return 0;
+  return gt->as<std::uint32_t>() * lf->as<std::uint32_t>();
+}
+
+void ErrorControl::reset_communication(sim::Time now) {
+  toggle_ = false;
+  armed_ = false;
+  in_error_ = false;
+  next_heartbeat_ = now + sim::milliseconds(heartbeat_period_ms());
+}
+
+void ErrorControl::on_frame(const sim::CanFrame& frame, sim::Time now) {
+  if (!frame.rtr) return;  // only remote frames are guard requests
+  if (heartbeat_period_ms() != 0 && !node_.policy().error_control.guard_while_heartbeat) return;
+  const auto state = static_cast<std::uint8_t>(node_.nmt_state());
+  node_.send(sim::CanFrame::data_frame(0x700u + node_.node_id(),
+                                       {static_cast<std::uint8_t>((toggle_ ? 0x80 : 0x00) | state)}));
+  toggle_ = !toggle_;
+  last_guard_ = now;
+  if (life_time_ms() != 0) armed_ = true;
+  if (in_error_) {
+    in_error_ = false;
+    node_.communication_recovered(CommError::LifeGuarding);
+  }
+}
+
+void ErrorControl::process(sim::Time now) {
+  const std::uint16_t period = heartbeat_period_ms();
+  if (period != 0 && now >= next_heartbeat_) {
+    node_.send(sim::CanFrame::data_frame(0x700u + node_.node_id(), {static_cast<std::uint8_t>(node_.nmt_state())}));
+    next_heartbeat_ += sim::milliseconds(period);
+    if (next_heartbeat_ <= now) next_heartbeat_ = now + sim::milliseconds(period);
+  }
+  const std::uint32_t life = life_time_ms();
+  if (armed_ && !in_error_ && life != 0 && now - last_guard_ > sim::milliseconds(life)) {
+    in_error_ = true;
+    node_.communication_error(CommError::LifeGuarding);
+  }
+}
+
+}  // namespace canopen

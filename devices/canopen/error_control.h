@@ -1,0 +1,39 @@
+// NMT error control of the node itself (CiA 301 §7.2.8.3.2): heartbeat producer (0x1017) and
+// node guarding with toggle bit plus life guarding (0x100C × 0x100D), all on COB-ID 0x700+N.
+#pragma once
+
+#include <cstdint>
+
+#include "sim/can_frame.h"
+#include "sim/time.h"
+
+namespace canopen {
+
+class Node;
+
+class ErrorControl {
+ public:
+  explicit ErrorControl(Node& node);
+  void bind_objects();
+
+  void on_frame(const sim::CanFrame& frame, sim::Time now);  ///< frames on 0x700+N
+  void process(sim::Time now);
+  /// After boot-up: toggle 0, guarding disarmed, first heartbeat one period from `now`.
+  void reset_communication(sim::Time now);
+
+  std::uint16_t heartbeat_period_ms() const;
+  bool life_guarding_armed() const { return armed_; }
+  bool life_guarding_error() const { return in_error_; }
+
+ private:
+  std::uint32_t life_time_ms() const;
+
+  Node& node_;
+  bool toggle_ = false;
+  bool armed_ = false;
+  bool in_error_ = false;
+  sim::Time last_guard_{};
+  sim::Time next_heartbeat_{};
+};
+
+}  // namespace canopen

@@ -1,0 +1,95 @@
+// LSS slave (CiA 305): switch state global/selective, configure node-ID, configure and activate
+// bit timing, store configuration, inquire identity and node-ID, identify (non-configured)
+// remote slave, fastscan. COB-IDs 0x7E5 (master → slave) and 0x7E4 (slave → master).
+#pragma once
+
+#include <bitset>
+#include <cstdint>
+
+#include "sim/can_frame.h"
+#include "sim/time.h"
+
+namespace canopen {
+
+class Node;
+
+struct LssPolicy {
+  /// Inquire services (0x5A-0x5E) answered in LSS waiting too (CiA 305: configuration only).
+  bool inquire_in_waiting = false;
+  /// LSS frames processed while NMT Operational.
+  bool in_operational = true;
+  bool activate_bit_timing = true;
+  bool fastscan = true;
+  bool fastscan_only_unconfigured = false;
+  /// Byte 1 of the switch-state-selective answer (0x44).
+  std::uint8_t selective_response_mode = 0x00;
+  /// CiA 305 transition 4 (waiting with a newly configured node-ID leaves the unconfigured
+  /// state) only after the configuration was stored.
+  bool transition4_requires_store = true;
+  /// Bit-timing table indices accepted by "configure bit timing" (CiA 305 table 1).
+  std::bitset<10> bit_rates = default_bit_rates();
+  /// Short frames (DLC < 8) read with missing bytes as 0 (else ignored).
+  bool pad_short_frames = true;
+
+  static std::bitset<10> default_bit_rates() {
+    std::bitset<10> b;
+    for (int i : {0, 1, 2, 3, 4, 6, 7, 8}) b.set(i);
+    return b;
+  }
+};
+
+/// Bit rate in kbit/s for a CiA 305 table index (0 = 1000 … 8 = 10, 9 = automatic → 0).
+unsigned lss_bit_rate_kbit(std::uint8_t table_index);
+
+class LssSlave {
+ public:
+  static constexpr std::uint32_t kMasterToSlave = 0x7E5;
+  static constexpr std::uint32_t kSlaveToMaster = 0x7E4;
+  static constexpr std::uint16_t kNvIndex = 0x0000;  ///< LSS configuration in the node's NV store
+
+  enum class State : std::uint8_t { Waiting, Configuration };
+
+  LssSlave(Node& node, const LssPolicy& policy);
+
+  /// Power-on: stored node-ID/bit rate become the pending (and so the active) values.
+  void power_on();
+  void on_frame(const sim::CanFrame& frame, sim::Time now);
+  void process(sim::Time now);
+
+  State state() const { return state_; }
+  std::uint8_t pending_node_id() const { return pending_node_id_; }
+  std::uint8_t pending_bit_rate() const { return pending_bit_rate_; }
+  std::uint8_t active_bit_rate() const { return active_bit_rate_; }
+  /// Default bit-rate table index used when nothing is stored.
+  void set_default_bit_rate(std::uint8_t index) { active_bit_rate_ = pending_bit_rate_ = default_bit_rate_ = index; }
+  LssPolicy& policy() { return policy_; }
+
+ private:
+  void reply(std::initializer_list<std::uint8_t> bytes);
+  void switch_global(std::uint8_t mode);
+  void switch_selective(std::uint8_t cs, std::uint32_t value);
+  void identify_remote(std::uint8_t cs, std::uint32_t value);
+  void fastscan(const std::uint8_t* d);
+  std::uint32_t identity(int sub) const;
+  bool unconfigured() const;
+
+  Node& node_;
+  LssPolicy policy_;
+  State state_ = State::Waiting;
+  std::uint8_t pending_node_id_ = 0xFF;
+  std::uint8_t default_bit_rate_ = 3;
+  std::uint8_t pending_bit_rate_ = 3;
+  std::uint8_t active_bit_rate_ = 3;
+  bool stored_since_configure_ = false;
+  int selective_step_ = 0;       // next expected switch-selective specifier offset (0..3)
+  int identify_step_ = 0;        // identify remote slave progress
+  bool identify_match_ = true;
+  std::uint32_t identify_low_ = 0;
+  int fastscan_position_ = 0;
+  // Activate bit timing: silent for delay, switch, silent for delay again.
+  bool switching_ = false;
+  sim::Time switch_at_{};
+  sim::Time resume_at_{};
+};
+
+}  // namespace canopen

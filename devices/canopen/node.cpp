@@ -1,0 +1,237 @@
+#include "devices/canopen/node.h"
+
+#include "devices/canopen/emergency.h"
+#include "devices/canopen/error_control.h"
+#include "devices/canopen/heartbeat_consumer.h"
+#include "devices/canopen/lss_slave.h"
+#include "devices/canopen/nmt_slave.h"
+#include "devices/canopen/pdo_service.h"
+#include "devices/canopen/sdo_server.h"
+#include "devices/canopen/store_restore.h"
+#include "devices/canopen/sync_consumer.h"
+#include "sim/log.h"
+
+namespace canopen {
+
+namespace {
+constexpr std::uint16_t kErrorBehaviour = 0x1029;
+constexpr std::uint32_t kLssMasterToSlave = 0x7E5;
+}  // namespace
+
+Node::Node(std::string name, ObjectDictionary od, NodePolicy policy, std::uint8_t node_id)
+    : name_(std::move(name)),
+      od_(std::move(od)),
+      policy_(std::move(policy)),
+      node_id_(node_id),
+      pending_node_id_(node_id),
+      emcy_(std::make_unique<Emergency>(*this)),
+      sdo_(std::make_unique<SdoServer>(*this)),
+      nmt_(std::make_unique<NmtSlave>(*this)),
+      error_control_(std::make_unique<ErrorControl>(*this)),
+      heartbeat_consumer_(std::make_unique<HeartbeatConsumer>(*this)),
+      sync_(std::make_unique<SyncConsumer>(*this)),
+      pdo_(std::make_unique<PdoService>(*this)),
+      store_(std::make_unique<StoreRestore>(*this)) {
+  emcy_->bind_objects();
+  error_control_->bind_objects();
+  heartbeat_consumer_->bind_objects();
+  sync_->bind_objects();
+  pdo_->bind_objects();
+  store_->bind_objects();
+}
+
+Node::~Node() = default;
+
+void Node::enable_lss(const LssPolicy& policy) { lss_ = std::make_unique<LssSlave>(*this, policy); }
+
+void Node::attach(sim::Bus& bus) {
+  bus_ = &bus;
+  endpoint_ = bus.attach(this);
+}
+
+void Node::send(const sim::CanFrame& frame) {
+  if (!powered_ || silent() || !bus_) return;
+  ++stats_.tx_frames;
+  bus_->send(endpoint_, frame, now_);
+}
+
+// ---- life cycle ---------------------------------------------------------------------------------
+
+void Node::power_on(sim::Time now) {
+  now_ = now;
+  powered_ = true;
+  silent_until_ = now;
+  nmt_state_ = NmtState::Initialising;
+  std::string error;
+  if (!store_->power_on(error)) sim::log(sim::LogLevel::Error, "node {}: {}; using defaults", name_, error);
+  if (lss_) lss_->power_on();
+  reset_application();
+  reset_communication();
+  boot_due_ = now + policy_.nmt.boot_delay;
+}
+
+void Node::power_off() {
+  powered_ = false;
+  boot_pending_ = false;
+  nmt_state_ = NmtState::Initialising;
+  sdo_->reset();
+}
+
+void Node::reset_application() {
+  store_->load_area(0x2000, 0xFFFF);
+  app().on_reset_application();
+}
+
+void Node::reset_communication() {
+  nmt_state_ = NmtState::Initialising;
+  app().on_reset_communication();
+  node_id_ = pending_node_id_;
+  store_->load_area(0x1000, 0x1FFF);
+  sdo_->reset();
+  emcy_->reset_communication();
+  heartbeat_consumer_->reload();
+  pdo_->reload();
+  app().after_reset_communication();
+  rebuild_dispatch();
+  boot_pending_ = true;
+  boot_due_ = now_ + policy_.nmt.reset_delay;
+}
+
+void Node::send_boot_up() {
+  boot_pending_ = false;
+  if (node_id_ == kUnconfigured || node_id_ == 0 || node_id_ > 127) return;  // LSS only until configured
+  const NmtState from = nmt_state_;
+  nmt_state_ = NmtState::PreOperational;  // boot-up is sent on the transition (EMCY allowed after)
+  send(sim::CanFrame::data_frame(0x700u + node_id_, {0x00}));
+  error_control_->reset_communication(now_);
+  app().on_nmt_state_changed(from, nmt_state_);
+}
+
+void Node::execute_nmt(NmtCommand command) {
+  if (!powered_ || nmt_state_ == NmtState::Initialising) return;
+  app().on_nmt_command(command);
+  switch (command) {
+    case NmtCommand::Start: set_nmt_state(NmtState::Operational); break;
+    case NmtCommand::Stop: set_nmt_state(NmtState::Stopped); break;
+    case NmtCommand::EnterPreOperational: set_nmt_state(NmtState::PreOperational); break;
+    case NmtCommand::ResetNode:
+      nmt_state_ = NmtState::Initialising;
+      reset_application();
+      reset_communication();
+      break;
+    case NmtCommand::ResetCommunication:
+      nmt_state_ = NmtState::Initialising;
+      reset_communication();
+      break;
+  }
+}
+
+void Node::set_nmt_state(NmtState state) {
+  if (state == nmt_state_) return;
+  const NmtState from = nmt_state_;
+  nmt_state_ = state;
+  if (state == NmtState::Operational) pdo_->on_enter_operational(now_);
+  app().on_nmt_state_changed(from, state);
+}
+
+void Node::communication_error(CommError error) {
+  if (app().on_communication_error(error)) return;
+  const auto& p = policy_.error_control;
+  const std::uint16_t code = error == CommError::HeartbeatConsumer ? p.heartbeat_consumer_emcy : p.life_guard_emcy;
+  if (code != 0) emcy_->raise(code, p.communication_error_register);
+  if (const auto* behaviour = od_.entry(kErrorBehaviour, 1)) {
+    switch (behaviour->as<std::uint8_t>()) {
+      case 0:
+        if (nmt_state_ == NmtState::Operational) set_nmt_state(NmtState::PreOperational);
+        break;
+      case 2: set_nmt_state(NmtState::Stopped); break;
+      default: break;  // 1: no state change
+    }
+  }
+}
+
+void Node::communication_recovered(CommError error) {
+  app().on_communication_recovered(error);
+  const auto& p = policy_.error_control;
+  const std::uint16_t code = error == CommError::HeartbeatConsumer ? p.heartbeat_consumer_emcy : p.life_guard_emcy;
+  if (code == 0) return;
+  // Clear only when no other communication watchdog still reports the same code.
+  const bool guard_bad = error_control_->life_guarding_error() && p.life_guard_emcy == code;
+  const bool hb_bad = heartbeat_consumer_->any_timed_out() && p.heartbeat_consumer_emcy == code;
+  if (!guard_bad && !hb_bad) emcy_->clear(code);
+}
+
+// ---- dispatch -----------------------------------------------------------------------------------
+
+void Node::add_route(std::uint32_t cob_id, Route r, std::uint8_t index) {
+  if (cob_id <= 0x7FF) {
+    routes_[cob_id] = RouteEntry{r, index};
+  } else {
+    extended_routes_.push_back(ExtendedRoute{cob_id, RouteEntry{r, index}});
+  }
+}
+
+void Node::rebuild_dispatch() {
+  routes_.fill(RouteEntry{});
+  extended_routes_.clear();
+  // Lowest priority first: later routes win on a clash (the own services over consumers).
+  for (auto producer : heartbeat_consumer_->producers()) add_route(0x700u + producer, Route::HeartbeatConsumer);
+  for (const auto& r : pdo_->tpdo_routes()) add_route(r.cob_id | (r.extended ? 0x80000000u : 0), Route::TpdoRtr, static_cast<std::uint8_t>(r.number));
+  for (const auto& r : pdo_->rpdo_routes()) add_route(r.cob_id | (r.extended ? 0x80000000u : 0), Route::Rpdo, static_cast<std::uint8_t>(r.number));
+  add_route(sync_->cob_id() | (sync_->extended() ? 0x80000000u : 0), Route::Sync);
+  const std::uint32_t sdo_rx = sdo_->rx_cob_id();
+  if (!(sdo_rx & 0x80000000u)) add_route(sdo_rx & ((sdo_rx & 0x20000000u) ? 0x9FFFFFFFu : 0x7FFu), Route::SdoRx);
+  if (node_id_ >= 1 && node_id_ <= 127) add_route(0x700u + node_id_, Route::ErrorControl);
+  if (lss_) add_route(kLssMasterToSlave, Route::Lss);
+  add_route(0x000, Route::Nmt);
+}
+
+void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
+  if (!powered_) return;
+  now_ = now;
+  if (silent()) return;
+  ++stats_.rx_frames;
+  RouteEntry route;
+  if (!frame.extended) {
+    route = routes_[frame.id & 0x7FF];
+  } else {
+    const std::uint32_t key = frame.id | 0x80000000u;
+    for (const auto& r : extended_routes_)
+      if (r.id == key) route = r.entry;
+  }
+  const bool configured = node_id_ >= 1 && node_id_ <= 127;
+  if (!configured && route.route != Route::Lss) return;  // unconfigured: LSS only
+  if (boot_pending_ && route.route != Route::Lss) return;  // still initialising
+  switch (route.route) {
+    case Route::Nmt: nmt_->on_frame(frame); break;
+    case Route::Sync: sync_->on_frame(frame, now); break;
+    case Route::Rpdo: pdo_->on_rpdo(route.index, frame, now); break;
+    case Route::TpdoRtr: pdo_->on_tpdo_rtr(route.index, frame, now); break;
+    case Route::SdoRx:
+      if (sdo_allowed(nmt_state_)) sdo_->on_request(frame, now);
+      break;
+    case Route::ErrorControl:
+      if (error_control_allowed(nmt_state_)) error_control_->on_frame(frame, now);
+      break;
+    case Route::HeartbeatConsumer: heartbeat_consumer_->on_frame(frame, now); break;
+    case Route::Lss: lss_->on_frame(frame, now); break;
+    case Route::None: ++stats_.ignored_frames; break;
+  }
+}
+
+void Node::step(sim::Time now, sim::Duration dt) {
+  if (!powered_) return;
+  now_ = now;
+  if (lss_) lss_->process(now);  // runs while silent: it ends an "activate bit timing" pause
+  if (silent()) return;
+  if (boot_pending_ && now >= boot_due_) send_boot_up();
+  if (boot_pending_ || nmt_state_ == NmtState::Initialising) return;
+  sdo_->process(now);
+  error_control_->process(now);
+  heartbeat_consumer_->process(now);
+  app().process(now, dt);
+  pdo_->process(now);
+  emcy_->process(now);
+}
+
+}  // namespace canopen

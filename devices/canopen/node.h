@@ -1,0 +1,153 @@
+// A CANopen slave node: object dictionary + the CiA 301 services + optional LSS slave, attached
+// to one bus. Received frames are dispatched through a COB-ID table (O(1), no allocation); time
+// advances through step(). A product is a Node plus an Application (its behaviour).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "devices/canopen/application.h"
+#include "devices/canopen/nmt_state.h"
+#include "devices/canopen/node_policy.h"
+#include "devices/canopen/object_dictionary.h"
+#include "sim/bus.h"
+#include "sim/scheduler.h"
+
+namespace canopen {
+
+class Emergency;
+class SdoServer;
+class NmtSlave;
+class ErrorControl;
+class HeartbeatConsumer;
+class SyncConsumer;
+class PdoService;
+class StoreRestore;
+class LssSlave;
+struct LssPolicy;
+
+class Node final : public sim::FrameReceiver, public sim::Steppable {
+ public:
+  static constexpr std::uint8_t kUnconfigured = 0xFF;
+
+  Node(std::string name, ObjectDictionary od, NodePolicy policy, std::uint8_t node_id);
+  ~Node() override;
+  Node(const Node&) = delete;
+  Node& operator=(const Node&) = delete;
+
+  void set_application(Application* app) { app_ = app; }
+  Application& app() { return app_ ? *app_ : null_app_; }
+  /// Adds an LSS slave (CiA 305). Identity comes from 0x1018.
+  void enable_lss(const LssPolicy& policy);
+
+  void attach(sim::Bus& bus);
+  /// Power-on: reload stored parameters, reset application and communication, boot-up (after
+  /// the policy's boot delay). `now` is the current simulation time.
+  void power_on(sim::Time now);
+  /// Power-off: silent, state lost except non-volatile storage.
+  void power_off();
+  bool powered() const { return powered_; }
+
+  void on_frame(const sim::CanFrame& frame, sim::Time now) override;
+  void step(sim::Time now, sim::Duration dt) override;
+
+  // --- state ----------------------------------------------------------------------------------
+  const std::string& name() const { return name_; }
+  ObjectDictionary& od() { return od_; }
+  const ObjectDictionary& od() const { return od_; }
+  NodePolicy& policy() { return policy_; }
+  const NodePolicy& policy() const { return policy_; }
+  std::uint8_t node_id() const { return node_id_; }
+  std::uint8_t pending_node_id() const { return pending_node_id_; }
+  /// Node-ID that the next communication reset applies (LSS, 0x2000-style objects).
+  void set_pending_node_id(std::uint8_t id) { pending_node_id_ = id; }
+  NmtState nmt_state() const { return nmt_state_; }
+  sim::Time now() const { return now_; }
+
+  Emergency& emergency() { return *emcy_; }
+  SdoServer& sdo() { return *sdo_; }
+  PdoService& pdo() { return *pdo_; }
+  ErrorControl& error_control() { return *error_control_; }
+  HeartbeatConsumer& heartbeat_consumer() { return *heartbeat_consumer_; }
+  SyncConsumer& sync() { return *sync_; }
+  StoreRestore& store() { return *store_; }
+  LssSlave* lss() { return lss_.get(); }
+
+  // --- actions --------------------------------------------------------------------------------
+  /// Transmits a frame (dropped while powered off, silent or bus-off).
+  void send(const sim::CanFrame& frame);
+  /// Executes an NMT command as if received (also used for internal state changes).
+  void execute_nmt(NmtCommand command);
+  /// Changes the NMT state directly (e.g. error behaviour 0x1029 → Pre-operational).
+  void set_nmt_state(NmtState state);
+  /// No frame in or out until `until` (e.g. while "saving to EEPROM").
+  void go_silent_until(sim::Time until) { silent_until_ = until; }
+  bool silent() const { return now_ < silent_until_; }
+  /// Re-reads COB-IDs from the object dictionary into the dispatch table.
+  void rebuild_dispatch();
+  /// A communication error (life guarding, heartbeat consumer) began / ended: the application
+  /// may handle it; otherwise EMCY per policy and the 0x1029:01 reaction.
+  void communication_error(CommError error);
+  void communication_recovered(CommError error);
+
+  // Counters for diagnostics and tests.
+  struct Stats {
+    std::uint64_t rx_frames = 0;
+    std::uint64_t tx_frames = 0;
+    std::uint64_t ignored_frames = 0;
+  };
+  const Stats& stats() const { return stats_; }
+
+ private:
+  friend class LssSlave;  // applies a configured node-ID (CiA 305 transition 4)
+  enum class Route : std::uint8_t { None, Nmt, Sync, Rpdo, TpdoRtr, SdoRx, ErrorControl, HeartbeatConsumer, Lss };
+  struct RouteEntry {
+    Route route = Route::None;
+    std::uint8_t index = 0;
+  };
+  struct ExtendedRoute {
+    std::uint32_t id;
+    RouteEntry entry;
+  };
+
+  void add_route(std::uint32_t cob_id, Route r, std::uint8_t index = 0);
+  void reset_application();
+  void reset_communication();
+  void send_boot_up();
+
+  std::string name_;
+  ObjectDictionary od_;
+  NodePolicy policy_;
+  std::uint8_t node_id_;
+  std::uint8_t pending_node_id_;
+  NmtState nmt_state_ = NmtState::Initialising;
+  bool powered_ = false;
+  bool boot_pending_ = false;
+  sim::Time boot_due_{};
+  sim::Time now_{};
+  sim::Time silent_until_{};
+
+  sim::Bus* bus_ = nullptr;
+  int endpoint_ = -1;
+  Application* app_ = nullptr;
+  Application null_app_;
+
+  std::array<RouteEntry, 2048> routes_{};
+  std::vector<ExtendedRoute> extended_routes_;
+
+  std::unique_ptr<Emergency> emcy_;
+  std::unique_ptr<SdoServer> sdo_;
+  std::unique_ptr<NmtSlave> nmt_;
+  std::unique_ptr<ErrorControl> error_control_;
+  std::unique_ptr<HeartbeatConsumer> heartbeat_consumer_;
+  std::unique_ptr<SyncConsumer> sync_;
+  std::unique_ptr<PdoService> pdo_;
+  std::unique_ptr<StoreRestore> store_;
+  std::unique_ptr<LssSlave> lss_;
+  Stats stats_;
+};
+
+}  // namespace canopen

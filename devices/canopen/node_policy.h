@@ -1,0 +1,156 @@
+// Behaviour knobs of the CiA 301 stack. Defaults follow CiA 301; each product sets what its manual
+// says where the manuals differ (abort codes, tolerance of short frames, TPDO triggers, ...).
+// Anything more particular than a knob is done with object-dictionary hooks or Application events.
+#pragma once
+
+#include <bitset>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "devices/canopen/sdo_abort.h"
+#include "sim/time.h"
+
+namespace canopen {
+
+struct SdoPolicy {
+  /// Request frames with DLC < 8: ignored (CiA 301) or read with missing bytes as 0.
+  bool pad_short_requests = false;
+  /// Expedited/segmented download whose size differs from a fixed-size object.
+  enum class SizeMode : std::uint8_t {
+    Strict,            ///< 0x06070012 / 0x06070013
+    Lenient,           ///< extend (sign/zero) or truncate
+    ExcessMustBeZero,  ///< longer accepted if the extra bytes are 0 / a sign extension; shorter extended
+  } size_mode = SizeMode::Strict;
+  SdoAbort unknown_command = SdoAbort::InvalidCommand;
+  sim::Duration timeout = sim::milliseconds(1000);  ///< segmented transfer idle limit; 0 = none
+  bool segmented_download = true;
+  /// A segmented transfer whose total differs from the object size (numeric types).
+  SdoAbort segmented_size_mismatch = SdoAbort::TypeMismatch;
+  /// A download to a data type definition (DEFTYPE/DEFSTRUCT object, e.g. the dummy types
+  /// 0x0002-0x0007 an EDS declares in [DummyUsage]): CiA 301 §7.4.7 entries that describe a type
+  /// and hold no parameter, so the access itself is unsupported (reading gives the length).
+  SdoAbort type_definition_write = SdoAbort::UnsupportedAccess;
+};
+
+struct NmtPolicy {
+  bool require_dlc_2 = true;  ///< false: accept DLC >= 2
+  bool stop_supported = true;
+  sim::Duration boot_delay{0};   ///< power-on → boot-up frame
+  sim::Duration reset_delay{0};  ///< NMT reset → boot-up frame
+};
+
+struct ErrorControlPolicy {
+  /// Answer node-guarding RTRs while the heartbeat producer runs (CiA 301 says they are
+  /// exclusive; many devices answer anyway).
+  bool guard_while_heartbeat = true;
+  /// EMCY for a life-guarding or heartbeat-consumer timeout; 0 = none.
+  std::uint16_t life_guard_emcy = 0x8130;
+  std::uint16_t heartbeat_consumer_emcy = 0x8130;
+  std::uint8_t communication_error_register = 0x11;
+  /// CiA 301 §7.5.2.21 (0x1016): configuring a second non-zero consumer heartbeat time for a
+  /// node-ID that another sub-index already watches is refused with this code (None = allowed).
+  SdoAbort duplicate_consumer = SdoAbort::ParameterIncompatible;
+};
+
+struct EmcyPolicy {
+  enum class History : std::uint8_t {
+    Events,         ///< 0x1003 logs every EMCY event, newest first (CiA 301)
+    PresentErrors,  ///< 0x1003 lists only errors still present, newest first
+  } history = History::Events;
+  std::uint8_t history_depth = 8;  ///< 0 = no 0x1003 handling by the stack
+  /// Send the "error reset / no error" EMCY (code 0x0000) when the last active error clears.
+  bool send_no_error = true;
+  /// Record events that occur in Stopped (their EMCY is never sent).
+  bool record_when_not_sent = true;
+  bool clear_history_on_reset_communication = true;
+  SdoAbort history_write_nonzero = SdoAbort::InvalidValue;
+  /// Reading 0x1003:k with k above the current count.
+  SdoAbort history_read_beyond = SdoAbort::NoData;
+};
+
+struct PdoPolicy {
+  /// Asynchronous TPDO (types 254, 255) triggers.
+  struct AsyncTriggers {
+    bool on_change = true;     ///< mapped data changed (checked every tick)
+    bool after_rpdo = false;   ///< right after the RPDO with the same number was processed
+    bool on_timer = true;      ///< event timer (sub 5)
+  };
+  AsyncTriggers type254{};
+  AsyncTriggers type255{};
+  /// Send each event-driven TPDO once when entering Operational.
+  bool send_async_on_operational = false;
+  /// Remote request whose DLC differs from the TPDO length.
+  enum class RtrDlcMismatch : std::uint8_t { Answer, EmptyFrame, Ignore } rtr_dlc_mismatch = RtrDlcMismatch::Answer;
+  /// RPDO shorter than its mapping: EMCY 0x8210 (CiA 301) or silently ignored. Longer: 0x8220.
+  bool rpdo_length_emcy = true;
+  bool rpdo_too_long_is_error = true;
+  /// Transmission types accepted on writes to sub 2.
+  std::bitset<256> rpdo_types = default_rpdo_types();
+  std::bitset<256> tpdo_types = default_tpdo_types();
+  SdoAbort bad_transmission_type = SdoAbort::InvalidValue;
+  /// CiA 301 rules for changing parameters: COB-ID only while invalid (else 0x06090030), mapping
+  /// only while the PDO is invalid (else 0x08000022), entries only while sub 0 is 0 (0x08000022).
+  bool cobid_change_requires_invalid = true;
+  bool mapping_requires_invalid = true;
+  bool mapping_entry_requires_sub0_zero = true;
+  /// All PDO parameter writes refused outside Pre-operational (0x08000022).
+  bool parameters_preop_only = false;
+  bool dummy_mapping = true;
+  /// Mapping length may differ from the object size (value widened / truncated).
+  bool width_conversion = false;
+  /// Mapping entry whose length differs from the object (without width conversion).
+  SdoAbort mapping_length_mismatch = SdoAbort::NotMappable;
+  /// SYNC frames with DLC != 0 are ignored (some devices insist on DLC 0).
+  bool sync_requires_dlc0 = false;
+  /// 0x1005 written with bit 30 (SYNC producer): the emulated nodes only consume SYNC.
+  SdoAbort sync_producer_refused = SdoAbort::InvalidValue;
+
+  static std::bitset<256> default_rpdo_types() {
+    std::bitset<256> b;
+    for (int t = 0; t <= 240; ++t) b.set(t);
+    b.set(254);
+    b.set(255);
+    return b;
+  }
+  static std::bitset<256> default_tpdo_types() {
+    std::bitset<256> b;
+    for (int t = 0; t <= 240; ++t) b.set(t);
+    for (int t = 252; t <= 255; ++t) b.set(t);
+    return b;
+  }
+};
+
+struct StorePolicy {
+  SdoAbort wrong_signature = SdoAbort::DataTransfer;
+  enum class Restore : std::uint8_t {
+    EraseStored,       ///< CiA 301 / CANopenNode: stored values are erased; defaults at next reset
+    PendingUntilReset, ///< non-volatile memory untouched; defaults at next reset; power cycle discards
+  } restore = Restore::EraseStored;
+  /// Time during which the node is silent while saving (frames in and out dropped).
+  sim::Duration busy_time{0};
+  /// File holding this node's stored parameters ("" = RAM only: lost at power-off).
+  std::string path;
+  /// Storing a node-ID-relative entry (COB-IDs) that still has its default keeps it relative,
+  /// so it follows a later node-ID change. true: store the absolute value ("frozen").
+  bool freeze_node_relative = false;
+  /// Sub-index of 0x1010/0x1011 → index ranges it covers. Empty = CiA 301 default
+  /// (1 all, 2 communication, 3 application 6000h-9FFFh, 4 manufacturer 2000h-5FFFh).
+  struct Group {
+    std::uint8_t sub;
+    std::vector<std::pair<std::uint16_t, std::uint16_t>> ranges;
+  };
+  std::vector<Group> groups;
+};
+
+struct NodePolicy {
+  SdoPolicy sdo;
+  NmtPolicy nmt;
+  ErrorControlPolicy error_control;
+  EmcyPolicy emcy;
+  PdoPolicy pdo;
+  StorePolicy store;
+};
+
+}  // namespace canopen

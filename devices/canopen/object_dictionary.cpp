@@ -1,0 +1,274 @@
+#include "devices/canopen/object_dictionary.h"
+
+#include <algorithm>
+#include <array>
+#include <stdexcept>
+
+namespace canopen {
+
+std::int64_t decode_signed(std::span<const std::uint8_t> bytes) {
+  const std::size_t n = std::min<std::size_t>(bytes.size(), 8);
+  if (n == 0) return 0;
+  std::uint64_t u = decode_unsigned(bytes);
+  if (n < 8 && (bytes[n - 1] & 0x80)) u |= ~std::uint64_t{0} << (8 * n);
+  return static_cast<std::int64_t>(u);
+}
+
+std::uint64_t decode_unsigned(std::span<const std::uint8_t> bytes) {
+  std::uint64_t u = 0;
+  const std::size_t n = std::min<std::size_t>(bytes.size(), 8);
+  for (std::size_t i = 0; i < n; ++i) u |= static_cast<std::uint64_t>(bytes[i]) << (8 * i);
+  return u;
+}
+
+double decode_real(DataType type, std::span<const std::uint8_t> bytes) {
+  if (type == DataType::Real32 && bytes.size() >= 4) {
+    float f;
+    std::memcpy(&f, bytes.data(), 4);
+    return f;
+  }
+  if (type == DataType::Real64 && bytes.size() >= 8) {
+    double d;
+    std::memcpy(&d, bytes.data(), 8);
+    return d;
+  }
+  return 0.0;
+}
+
+void encode_unsigned(std::uint64_t v, std::span<std::uint8_t> out) {
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = i < 8 ? static_cast<std::uint8_t>(v >> (8 * i)) : 0;
+}
+
+int compare_values(DataType type, std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) {
+  if (is_real(type)) {
+    const double x = decode_real(type, a), y = decode_real(type, b);
+    return x < y ? -1 : (x > y ? 1 : 0);
+  }
+  if (is_signed_integer(type)) {
+    const auto x = decode_signed(a), y = decode_signed(b);
+    return x < y ? -1 : (x > y ? 1 : 0);
+  }
+  if (is_unsigned_integer(type) || type == DataType::TimeOfDay || type == DataType::TimeDifference) {
+    const auto x = decode_unsigned(a), y = decode_unsigned(b);
+    return x < y ? -1 : (x > y ? 1 : 0);
+  }
+  return 0;
+}
+
+Bytes resize_value(DataType type, std::span<const std::uint8_t> bytes, std::size_t size) {
+  Bytes out(size, 0);
+  const std::size_t n = std::min(size, bytes.size());
+  std::copy_n(bytes.begin(), n, out.begin());
+  if (size > bytes.size() && is_signed_integer(type) && !bytes.empty() && (bytes.back() & 0x80)) {
+    std::fill(out.begin() + static_cast<std::ptrdiff_t>(bytes.size()), out.end(), 0xFF);
+  }
+  return out;
+}
+
+// ---- OdEntry -----------------------------------------------------------------------------------
+
+Bytes OdEntry::default_for_node(std::uint8_t node_id) const {
+  if (!node_id_relative) return default_value;
+  Bytes v = default_value;
+  encode_unsigned(decode_unsigned(v) + node_id, v);
+  return v;
+}
+
+void OdEntry::reset_to_default(std::uint8_t node_id) { value = default_for_node(node_id); }
+
+// ---- ObjectDictionary: building ----------------------------------------------------------------
+
+OdObject& ObjectDictionary::add_object(std::uint16_t index, std::string name, ObjectCode code) {
+  auto [it, inserted] = objects_.try_emplace(index);
+  if (inserted) {
+    it->second.index = index;
+    it->second.name = std::move(name);
+    it->second.code = code;
+  }
+  return it->second;
+}
+
+OdEntry& ObjectDictionary::add_entry(std::uint16_t index, std::uint8_t sub, std::string name, DataType type,
+                                     Access access, Bytes default_value, bool pdo_mappable) {
+  auto& obj = add_object(index, sub == 0 ? name : std::string{}, ObjectCode::Var);
+  if (sub != 0 && obj.code == ObjectCode::Var) obj.code = ObjectCode::Record;
+  OdEntry& e = obj.entries[sub];
+  e.index = index;
+  e.sub = sub;
+  e.name = std::move(name);
+  e.type = type;
+  e.access = access;
+  e.pdo_mappable = pdo_mappable;
+  const std::size_t n = type_size(type);
+  if (n != 0) default_value = resize_value(type, default_value, n);
+  e.default_value = default_value;
+  e.value = std::move(default_value);
+  return e;
+}
+
+OdEntry& ObjectDictionary::add_var(std::uint16_t index, std::string name, DataType type, Access access,
+                                   Bytes default_value, bool pdo_mappable) {
+  auto& obj = add_object(index, name, ObjectCode::Var);
+  obj.code = ObjectCode::Var;
+  return add_entry(index, 0, std::move(name), type, access, std::move(default_value), pdo_mappable);
+}
+
+Bytes ObjectDictionary::encode(DataType type, std::string_view text) {
+  (void)type;
+  return Bytes(text.begin(), text.end());
+}
+
+void ObjectDictionary::remove_entry(std::uint16_t index, std::uint8_t sub) {
+  if (auto* o = object(index)) o->entries.erase(sub);
+}
+
+// ---- lookup ------------------------------------------------------------------------------------
+
+OdObject* ObjectDictionary::object(std::uint16_t index) {
+  auto it = objects_.find(index);
+  return it == objects_.end() ? nullptr : &it->second;
+}
+
+const OdObject* ObjectDictionary::object(std::uint16_t index) const {
+  auto it = objects_.find(index);
+  return it == objects_.end() ? nullptr : &it->second;
+}
+
+OdEntry* ObjectDictionary::entry(std::uint16_t index, std::uint8_t sub) {
+  auto* o = object(index);
+  if (!o) return nullptr;
+  auto it = o->entries.find(sub);
+  return it == o->entries.end() ? nullptr : &it->second;
+}
+
+const OdEntry* ObjectDictionary::entry(std::uint16_t index, std::uint8_t sub) const {
+  const auto* o = object(index);
+  if (!o) return nullptr;
+  auto it = o->entries.find(sub);
+  return it == o->entries.end() ? nullptr : &it->second;
+}
+
+SdoAbort ObjectDictionary::locate(std::uint16_t index, std::uint8_t sub, OdEntry*& out) {
+  auto* o = object(index);
+  if (!o) return SdoAbort::NoObject;
+  auto it = o->entries.find(sub);
+  if (it == o->entries.end()) return SdoAbort::NoSubIndex;
+  out = &it->second;
+  return SdoAbort::None;
+}
+
+OdEntry& ObjectDictionary::must_entry(std::uint16_t index, std::uint8_t sub) {
+  if (auto* e = entry(index, sub)) return *e;
+  throw std::out_of_range("object dictionary has no entry " + std::to_string(index) + ":" + std::to_string(sub));
+}
+
+const OdEntry& ObjectDictionary::must_entry(std::uint16_t index, std::uint8_t sub) const {
+  if (const auto* e = entry(index, sub)) return *e;
+  throw std::out_of_range("object dictionary has no entry " + std::to_string(index) + ":" + std::to_string(sub));
+}
+
+// ---- protocol access ---------------------------------------------------------------------------
+
+SdoAbort ObjectDictionary::read(OdEntry& e, Origin origin) {
+  const bool external = origin == Origin::Sdo || origin == Origin::Pdo;
+  if (external && !e.readable()) return access_aborts_.read_write_only;
+  for (auto& hook : e.read_hooks) {
+    if (auto a = hook(e, origin); a != SdoAbort::None) return a;
+  }
+  return SdoAbort::None;
+}
+
+SdoAbort ObjectDictionary::read(std::uint16_t index, std::uint8_t sub, Bytes& out, Origin origin) {
+  OdEntry* e = nullptr;
+  if (auto a = locate(index, sub, e); a != SdoAbort::None) return a;
+  if (auto a = read(*e, origin); a != SdoAbort::None) return a;
+  out = e->value;
+  return SdoAbort::None;
+}
+
+SdoAbort ObjectDictionary::check_write(OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
+  const bool external = origin == Origin::Sdo || origin == Origin::Pdo;
+  if (external && !e.writable()) return access_aborts_.write_read_only;
+  const std::size_t fixed = type_size(e.type);
+  if (fixed != 0 && data.size() != fixed) return data.size() > fixed ? SdoAbort::LengthTooHigh : SdoAbort::LengthTooLow;
+  if (fixed == 0 && e.max_length != 0 && data.size() > e.max_length) return SdoAbort::LengthTooHigh;
+  for (auto& check : e.state_checks) {
+    if (auto a = check(e, data, origin); a != SdoAbort::None) return a;
+  }
+  if (e.low_limit && compare_values(e.type, data, *e.low_limit) < 0) {
+    if (origin != Origin::Pdo) return SdoAbort::ValueTooLow;
+    std::copy(e.low_limit->begin(), e.low_limit->end(), data.begin());  // a PDO cannot be refused: clamp
+  }
+  if (e.high_limit && compare_values(e.type, data, *e.high_limit) > 0) {
+    if (origin != Origin::Pdo) return SdoAbort::ValueTooHigh;
+    std::copy(e.high_limit->begin(), e.high_limit->end(), data.begin());
+  }
+  for (auto& check : e.value_checks) {
+    if (auto a = check(e, data, origin); a != SdoAbort::None) return a;
+  }
+  return SdoAbort::None;
+}
+
+SdoAbort ObjectDictionary::write(OdEntry& e, std::span<const std::uint8_t> data, Origin origin) {
+  // Checks may normalise the value, so they work on a copy. Numeric values fit the stack buffer.
+  std::array<std::uint8_t, 8> small{};
+  Bytes large;
+  std::span<std::uint8_t> scratch;
+  if (data.size() <= small.size()) {
+    std::copy(data.begin(), data.end(), small.begin());
+    scratch = std::span<std::uint8_t>(small.data(), data.size());
+  } else {
+    large.assign(data.begin(), data.end());
+    scratch = large;
+  }
+  if (auto a = check_write(e, scratch, origin); a != SdoAbort::None) return a;
+  if (e.value.size() == scratch.size()) {
+    std::copy(scratch.begin(), scratch.end(), e.value.begin());
+  } else {
+    e.value.assign(scratch.begin(), scratch.end());
+  }
+  for (auto& obs : e.observers) obs(e, origin);
+  return SdoAbort::None;
+}
+
+SdoAbort ObjectDictionary::write(std::uint16_t index, std::uint8_t sub, std::span<const std::uint8_t> data,
+                                 Origin origin) {
+  OdEntry* e = nullptr;
+  if (auto a = locate(index, sub, e); a != SdoAbort::None) return a;
+  return write(*e, data, origin);
+}
+
+// ---- device access -----------------------------------------------------------------------------
+
+void ObjectDictionary::set_bytes(std::uint16_t index, std::uint8_t sub, std::span<const std::uint8_t> data) {
+  auto& e = must_entry(index, sub);
+  e.value.assign(data.begin(), data.end());
+}
+
+std::string ObjectDictionary::get_string(std::uint16_t index, std::uint8_t sub) const {
+  const auto& e = must_entry(index, sub);
+  return std::string(e.value.begin(), e.value.end());
+}
+
+// ---- hooks -------------------------------------------------------------------------------------
+
+void ObjectDictionary::add_check(std::uint16_t index, std::uint8_t sub, WriteCheck check, CheckStage stage) {
+  auto& e = must_entry(index, sub);
+  (stage == CheckStage::State ? e.state_checks : e.value_checks).push_back(std::move(check));
+}
+
+void ObjectDictionary::add_observer(std::uint16_t index, std::uint8_t sub, WriteObserver observer) {
+  must_entry(index, sub).observers.push_back(std::move(observer));
+}
+
+void ObjectDictionary::add_read_hook(std::uint16_t index, std::uint8_t sub, ReadHook hook) {
+  must_entry(index, sub).read_hooks.push_back(std::move(hook));
+}
+
+void ObjectDictionary::reset_range(std::uint16_t first, std::uint16_t last, std::uint8_t node_id) {
+  for (auto it = objects_.lower_bound(first); it != objects_.end() && it->first <= last; ++it) {
+    for (auto& [sub, e] : it->second.entries) e.reset_to_default(node_id);
+  }
+}
+
+}  // namespace canopen

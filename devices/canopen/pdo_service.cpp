@@ -1,0 +1,405 @@
+#include "devices/canopen/pdo_service.h"
+
+#include <algorithm>
+
+#include "devices/canopen/emergency.h"
+#include "devices/canopen/node.h"
+
+namespace canopen {
+
+namespace {
+constexpr std::uint16_t kRpdoComm = 0x1400, kRpdoMap = 0x1600, kTpdoComm = 0x1800, kTpdoMap = 0x1A00;
+constexpr int kMaxPdos = 512;
+constexpr std::uint32_t kInvalid = 0x80000000u, kNoRtr = 0x40000000u, kExtended = 0x20000000u;
+constexpr std::uint16_t kEmcyRpdoShort = 0x8210, kEmcyRpdoLong = 0x8220, kEmcyRpdoTimeout = 0x8250;
+
+bool external(Origin o) { return o == Origin::Sdo; }
+}  // namespace
+
+PdoService::PdoService(Node& node) : node_(node) {}
+
+MappingRules PdoService::rules() const {
+  const auto& p = node_.policy().pdo;
+  return MappingRules{p.dummy_mapping, p.width_conversion, p.mapping_length_mismatch};
+}
+
+void PdoService::bind_objects() {
+  auto& od = node_.od();
+  rpdos_.clear();
+  tpdos_.clear();
+  for (int i = 0; i < kMaxPdos; ++i) {
+    const auto comm = static_cast<std::uint16_t>(kRpdoComm + i), map = static_cast<std::uint16_t>(kRpdoMap + i);
+    if (od.object(comm) && od.object(map)) {
+      Rpdo r;
+      r.number = i + 1;
+      r.comm_index = comm;
+      r.map_index = map;
+      rpdos_.push_back(r);
+      install_checks(comm, map, PdoDirection::Receive);
+    }
+  }
+  for (int i = 0; i < kMaxPdos; ++i) {
+    const auto comm = static_cast<std::uint16_t>(kTpdoComm + i), map = static_cast<std::uint16_t>(kTpdoMap + i);
+    if (od.object(comm) && od.object(map)) {
+      Tpdo t;
+      t.number = i + 1;
+      t.comm_index = comm;
+      t.map_index = map;
+      tpdos_.push_back(t);
+      install_checks(comm, map, PdoDirection::Transmit);
+    }
+  }
+}
+
+void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_index, PdoDirection dir) {
+  auto& od = node_.od();
+  auto preop_only = [this](const OdEntry&, std::span<std::uint8_t>, Origin origin) {
+    if (external(origin) && node_.policy().pdo.parameters_preop_only && node_.nmt_state() == NmtState::Operational) {
+      return SdoAbort::DataDeviceState;
+    }
+    return SdoAbort::None;
+  };
+  auto pdo_valid = [&od, comm_index]() {
+    const auto* e = od.entry(comm_index, 1);
+    return e && !(e->as<std::uint32_t>() & kInvalid);
+  };
+  auto reload_all = [this](OdEntry&, Origin) {
+    reload();
+    node_.rebuild_dispatch();
+  };
+
+  for (auto& [sub, e] : od.object(comm_index)->entries) {
+    if (sub == 0 || !e.writable()) continue;
+    od.add_check(comm_index, sub, preop_only, CheckStage::State);
+    od.add_observer(comm_index, sub, reload_all);
+  }
+  if (od.entry(comm_index, 1) && od.entry(comm_index, 1)->writable()) {
+    od.add_check(comm_index, 1, [this, &od, comm_index](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
+      if (!external(origin)) return SdoAbort::None;
+      const auto now_value = e.as<std::uint32_t>();
+      const auto new_value = static_cast<std::uint32_t>(decode_unsigned(data));
+      const bool new_valid = !(new_value & kInvalid);
+      if (new_valid && !(new_value & kExtended) && (new_value & 0x1FFFF800u)) return SdoAbort::InvalidValue;
+      if (node_.policy().pdo.cobid_change_requires_invalid && !(now_value & kInvalid) && new_valid &&
+          ((now_value ^ new_value) & 0x3FFFFFFFu) != 0) {
+        return SdoAbort::InvalidValue;  // CiA 301: change the identifier only while the PDO is invalid
+      }
+      (void)od;
+      (void)comm_index;
+      return SdoAbort::None;
+    });
+  }
+  if (od.entry(comm_index, 2) && od.entry(comm_index, 2)->writable()) {
+    od.add_check(comm_index, 2, [this, dir](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+      if (!external(origin)) return SdoAbort::None;
+      const auto& p = node_.policy().pdo;
+      const auto& allowed = dir == PdoDirection::Receive ? p.rpdo_types : p.tpdo_types;
+      return allowed.test(data[0]) ? SdoAbort::None : p.bad_transmission_type;
+    });
+  }
+
+  auto* map = od.object(map_index);
+  for (auto& [sub, e] : map->entries) {
+    if (!e.writable()) continue;
+    od.add_check(map_index, sub, preop_only, CheckStage::State);
+    od.add_check(
+        map_index, sub,
+        [this, pdo_valid, &od, map_index, s = sub](const OdEntry&, std::span<std::uint8_t>, Origin origin) {
+          if (!external(origin)) return SdoAbort::None;
+          const auto& p = node_.policy().pdo;
+          if (p.mapping_requires_invalid && pdo_valid()) return SdoAbort::DataDeviceState;
+          if (s != 0 && p.mapping_entry_requires_sub0_zero) {
+            const auto* count = od.entry(map_index, 0);
+            if (count && count->as<std::uint32_t>() != 0) return SdoAbort::DataDeviceState;
+          }
+          return SdoAbort::None;
+        },
+        CheckStage::State);
+    if (sub == 0) {
+      od.add_check(map_index, 0, [this, &od, map_index, dir](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+        if (!external(origin)) return SdoAbort::None;
+        PdoMapping probe;
+        return resolve_mapping(od, map_index, data[0], dir, rules(), probe);
+      });
+    } else {
+      od.add_check(map_index, sub, [this, &od, dir](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+        if (!external(origin)) return SdoAbort::None;
+        const auto v = static_cast<std::uint32_t>(decode_unsigned(data));
+        if (v == 0) return SdoAbort::None;  // clearing an entry is always allowed
+        MappedObject m;
+        return resolve_mapping_entry(od, v, dir, rules(), m);
+      });
+    }
+    od.add_observer(map_index, sub, reload_all);
+  }
+}
+
+void PdoService::load(Pdo& p, PdoDirection dir) {
+  auto& od = node_.od();
+  const auto* cob = od.entry(p.comm_index, 1);
+  const std::uint32_t v = cob ? cob->as<std::uint32_t>() : kInvalid;
+  p.cob_id = v & ((v & kExtended) ? 0x1FFFFFFFu : 0x7FFu);
+  p.extended = (v & kExtended) != 0;
+  p.rtr_allowed = !(v & kNoRtr);
+  const auto* type = od.entry(p.comm_index, 2);
+  p.type = type ? type->as<std::uint8_t>() : 255;
+  const auto* count = od.entry(p.map_index, 0);
+  const std::uint8_t n = count ? count->as<std::uint8_t>() : 0;
+  p.valid = !(v & kInvalid);
+  if (resolve_mapping(od, p.map_index, n, dir, rules(), p.mapping) != SdoAbort::None) {
+    p.mapping = PdoMapping{};  // an invalid stored mapping makes the PDO send/accept nothing
+  }
+}
+
+void PdoService::reload() {
+  for (auto& r : rpdos_) {
+    load(r, PdoDirection::Receive);
+    r.latched = false;
+  }
+  for (auto& t : tpdos_) load(t, PdoDirection::Transmit);
+}
+
+std::vector<PdoService::Route> PdoService::rpdo_routes() const {
+  std::vector<Route> routes;
+  for (const auto& r : rpdos_)
+    if (r.valid) routes.push_back(Route{r.cob_id, r.extended, r.number});
+  return routes;
+}
+
+std::vector<PdoService::Route> PdoService::tpdo_routes() const {
+  std::vector<Route> routes;
+  for (const auto& t : tpdos_)
+    if (t.valid && t.rtr_allowed) routes.push_back(Route{t.cob_id, t.extended, t.number});
+  return routes;
+}
+
+int PdoService::tpdo_length(int number) const {
+  for (const auto& t : tpdos_)
+    if (t.number == number) return t.mapping.length;
+  return -1;
+}
+
+int PdoService::rpdo_length(int number) const {
+  for (const auto& r : rpdos_)
+    if (r.number == number) return r.mapping.length;
+  return -1;
+}
+
+std::uint16_t PdoService::event_timer_ms(const Pdo& p) const {
+  const auto* e = node_.od().entry(p.comm_index, 5);
+  return e ? e->as<std::uint16_t>() : 0;
+}
+
+std::uint16_t PdoService::inhibit_100us(const Pdo& p) const {
+  const auto* e = node_.od().entry(p.comm_index, 3);
+  return e ? e->as<std::uint16_t>() : 0;
+}
+
+// ---- receive ------------------------------------------------------------------------------------
+
+void PdoService::on_rpdo(int number, const sim::CanFrame& frame, sim::Time now) {
+  if (!pdo_allowed(node_.nmt_state()) || frame.rtr) return;
+  auto it = std::find_if(rpdos_.begin(), rpdos_.end(), [number](const Rpdo& r) { return r.number == number; });
+  if (it == rpdos_.end() || !it->valid) return;
+  Rpdo& r = *it;
+  const auto& policy = node_.policy().pdo;
+  auto& emcy = node_.emergency();
+  if (frame.dlc < r.mapping.length) {
+    if (policy.rpdo_length_emcy) emcy.raise(kEmcyRpdoShort, node_.policy().error_control.communication_error_register);
+    return;
+  }
+  if (policy.rpdo_length_emcy) {
+    if (frame.dlc > r.mapping.length && policy.rpdo_too_long_is_error) {
+      emcy.raise(kEmcyRpdoLong, node_.policy().error_control.communication_error_register);
+    } else {
+      emcy.clear(kEmcyRpdoShort);
+      emcy.clear(kEmcyRpdoLong);
+    }
+  }
+  if (event_timer_ms(r) != 0) {
+    r.deadline_armed = true;
+    r.last_rx = now;
+    emcy.clear(kEmcyRpdoTimeout);
+  }
+  std::copy(frame.data.begin(), frame.data.end(), r.buffer.begin());
+  if (r.type <= 240) {
+    r.latched = true;  // synchronous: takes effect at the next SYNC
+    return;
+  }
+  apply_rpdo(r);
+}
+
+void PdoService::apply_rpdo(Rpdo& r) {
+  auto& od = node_.od();
+  std::size_t pos = 0;
+  for (const auto& m : r.mapping.objects) {
+    if (m.entry) {
+      const std::span<const std::uint8_t> slot(r.buffer.data() + pos, m.bytes);
+      if (m.bytes == m.entry->size()) {
+        (void)od.write(*m.entry, slot, Origin::Pdo);  // a refused PDO value is dropped silently
+      } else {
+        const Bytes widened = resize_value(m.entry->type, slot, m.entry->size());
+        (void)od.write(*m.entry, widened, Origin::Pdo);
+      }
+    }
+    pos += m.bytes;
+  }
+  r.latched = false;
+  node_.app().on_rpdo(r.number);
+  for (auto& t : tpdos_) {
+    if (t.number != r.number) continue;
+    const auto* trig = async_triggers(t);
+    if (trig && trig->after_rpdo) {
+      t.event_pending = true;
+      try_send_event(t, node_.now());
+    }
+  }
+}
+
+// ---- transmit -----------------------------------------------------------------------------------
+
+const PdoPolicy::AsyncTriggers* PdoService::async_triggers(const Tpdo& t) const {
+  if (t.type == 254) return &node_.policy().pdo.type254;
+  if (t.type == 255) return &node_.policy().pdo.type255;
+  return nullptr;
+}
+
+void PdoService::sample(Tpdo& t, std::array<std::uint8_t, 8>& out) {
+  node_.app().before_tpdo(t.number);
+  for (const auto& m : t.mapping.objects) {
+    if (m.entry) (void)node_.od().read(*m.entry, Origin::Pdo);
+  }
+  pack_pdo(t.mapping, out);
+}
+
+void PdoService::transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim::Time now) {
+  sim::CanFrame f;
+  f.id = t.cob_id;
+  f.extended = t.extended;
+  f.dlc = t.mapping.length;
+  f.data = data;
+  node_.send(f);
+  t.last_sent = data;
+  t.sent_once = true;
+  t.event_pending = false;
+  t.inhibit_until = now + sim::microseconds(static_cast<std::int64_t>(inhibit_100us(t)) * 100);
+  const auto et = event_timer_ms(t);
+  if (et != 0) t.next_timer = now + sim::milliseconds(et);
+}
+
+void PdoService::try_send_event(Tpdo& t, sim::Time now) {
+  if (!pdo_allowed(node_.nmt_state()) || !t.valid || t.mapping.length == 0) return;
+  if (!t.event_pending || now < t.inhibit_until) return;
+  std::array<std::uint8_t, 8> data{};
+  sample(t, data);
+  transmit(t, data, now);
+}
+
+void PdoService::request_tpdo(int number) {
+  for (auto& t : tpdos_) {
+    if (t.number != number) continue;
+    t.event_pending = true;
+    if (t.type >= 254) try_send_event(t, node_.now());
+  }
+}
+
+void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time now) {
+  if (!pdo_allowed(node_.nmt_state()) || !frame.rtr) return;
+  auto it = std::find_if(tpdos_.begin(), tpdos_.end(), [number](const Tpdo& t) { return t.number == number; });
+  if (it == tpdos_.end() || !it->valid || !it->rtr_allowed || it->mapping.length == 0) return;
+  Tpdo& t = *it;
+  if (frame.dlc != t.mapping.length) {
+    switch (node_.policy().pdo.rtr_dlc_mismatch) {
+      case PdoPolicy::RtrDlcMismatch::Ignore: return;
+      case PdoPolicy::RtrDlcMismatch::EmptyFrame: {
+        sim::CanFrame empty;
+        empty.id = t.cob_id;
+        empty.extended = t.extended;
+        node_.send(empty);
+        return;
+      }
+      case PdoPolicy::RtrDlcMismatch::Answer: break;
+    }
+  }
+  std::array<std::uint8_t, 8> data{};
+  if (t.type == 252 && t.has_sample) {
+    data = t.sampled;
+  } else {
+    sample(t, data);
+  }
+  transmit(t, data, now);
+}
+
+void PdoService::on_sync(std::uint8_t /*counter*/, sim::Time now) {
+  if (!pdo_allowed(node_.nmt_state())) return;
+  for (auto& r : rpdos_)
+    if (r.valid && r.latched) apply_rpdo(r);
+  for (auto& t : tpdos_) {
+    if (!t.valid || t.mapping.length == 0) continue;
+    if (t.type == 0) {
+      std::array<std::uint8_t, 8> data{};
+      sample(t, data);
+      if (t.event_pending || !t.sent_once || data != t.last_sent) transmit(t, data, now);
+    } else if (t.type <= 240) {
+      if (++t.sync_count >= t.type) {
+        t.sync_count = 0;
+        std::array<std::uint8_t, 8> data{};
+        sample(t, data);
+        transmit(t, data, now);
+      }
+    } else if (t.type == 252) {
+      sample(t, t.sampled);
+      t.has_sample = true;
+    }
+  }
+}
+
+void PdoService::on_enter_operational(sim::Time now) {
+  for (auto& r : rpdos_) {
+    r.latched = false;
+    r.deadline_armed = false;
+  }
+  for (auto& t : tpdos_) {
+    t.sync_count = 0;
+    t.sent_once = false;
+    t.has_sample = false;
+    t.event_pending = false;
+    t.inhibit_until = now;
+    const auto et = event_timer_ms(t);
+    t.next_timer = now + sim::milliseconds(et);
+    if (node_.policy().pdo.send_async_on_operational && t.type >= 254) {
+      t.event_pending = true;
+      try_send_event(t, now);
+    }
+  }
+}
+
+void PdoService::process(sim::Time now) {
+  if (!pdo_allowed(node_.nmt_state())) return;
+  for (auto& r : rpdos_) {
+    const auto et = event_timer_ms(r);
+    if (r.valid && r.deadline_armed && et != 0 && now - r.last_rx > sim::milliseconds(et)) {
+      r.deadline_armed = false;  // one EMCY per timeout; re-armed by the next reception
+      node_.emergency().raise(kEmcyRpdoTimeout, node_.policy().error_control.communication_error_register);
+    }
+  }
+  for (auto& t : tpdos_) {
+    const auto* trig = async_triggers(t);
+    if (!trig || !t.valid || t.mapping.length == 0) continue;
+    if (trig->on_timer) {
+      const auto et = event_timer_ms(t);
+      if (et != 0 && now >= t.next_timer) {
+        t.event_pending = true;
+        t.next_timer = now + sim::milliseconds(et);
+      }
+    }
+    if (trig->on_change && !t.event_pending) {
+      std::array<std::uint8_t, 8> data{};
+      sample(t, data);
+      if (!t.sent_once || data != t.last_sent) t.event_pending = true;
+    }
+    try_send_event(t, now);
+  }
+}
+
+}  // namespace canopen

@@ -1,0 +1,98 @@
+// Receive and transmit PDOs (CiA 301 §7.2.2): communication parameters (0x1400+/0x1800+),
+// mapping (0x1600+/0x1A00+) with the dynamic-mapping procedure and its aborts, and every
+// transmission type: 0 (acyclic synchronous), 1-240 (every n-th SYNC), 252/253 (RTR only),
+// 254/255 (event-driven, inhibit time, event timer).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "devices/canopen/node_policy.h"
+#include "devices/canopen/pdo_mapping.h"
+#include "sim/can_frame.h"
+#include "sim/time.h"
+
+namespace canopen {
+
+class Node;
+
+class PdoService {
+ public:
+  explicit PdoService(Node& node);
+
+  /// Finds the PDO objects in the dictionary and installs their write checks.
+  void bind_objects();
+  /// Re-reads every PDO's parameters and mapping (after a reset or a device-made mapping change).
+  void reload();
+
+  int rpdo_count() const { return static_cast<int>(rpdos_.size()); }
+  int tpdo_count() const { return static_cast<int>(tpdos_.size()); }
+  /// COB-IDs to route (valid PDOs only).
+  struct Route {
+    std::uint32_t cob_id;
+    bool extended;
+    int number;  // 1-based
+  };
+  std::vector<Route> rpdo_routes() const;
+  std::vector<Route> tpdo_routes() const;  ///< for remote requests
+
+  void on_rpdo(int number, const sim::CanFrame& frame, sim::Time now);
+  void on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time now);
+  void on_sync(std::uint8_t counter, sim::Time now);
+  void on_enter_operational(sim::Time now);
+  /// Application event for TPDO n (types 0 and 254/255): sends now (or at the next SYNC for
+  /// type 0), subject to the inhibit time.
+  void request_tpdo(int number);
+  void process(sim::Time now);
+
+  /// Current mapped length of TPDO/RPDO n (for tests and tools).
+  int tpdo_length(int number) const;
+  int rpdo_length(int number) const;
+
+ private:
+  struct Pdo {
+    int number = 0;
+    std::uint16_t comm_index = 0;
+    std::uint16_t map_index = 0;
+    bool valid = false;
+    bool extended = false;
+    bool rtr_allowed = true;
+    std::uint32_t cob_id = 0;
+    std::uint8_t type = 255;
+    PdoMapping mapping;
+  };
+  struct Rpdo : Pdo {
+    bool latched = false;
+    std::array<std::uint8_t, 8> buffer{};
+    bool deadline_armed = false;
+    sim::Time last_rx{};
+  };
+  struct Tpdo : Pdo {
+    std::uint8_t sync_count = 0;
+    bool sent_once = false;
+    bool event_pending = false;     ///< triggered, waiting for the inhibit time (or SYNC for type 0)
+    sim::Time inhibit_until{};
+    sim::Time next_timer{};
+    std::array<std::uint8_t, 8> last_sent{};
+    std::array<std::uint8_t, 8> sampled{};   ///< type 252: sampled at SYNC
+    bool has_sample = false;
+  };
+
+  void load(Pdo& p, PdoDirection dir);
+  void install_checks(std::uint16_t comm_index, std::uint16_t map_index, PdoDirection dir);
+  void apply_rpdo(Rpdo& p);
+  void sample(Tpdo& t, std::array<std::uint8_t, 8>& out);
+  void transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim::Time now);
+  void try_send_event(Tpdo& t, sim::Time now);
+  const PdoPolicy::AsyncTriggers* async_triggers(const Tpdo& t) const;
+  std::uint16_t event_timer_ms(const Pdo& p) const;
+  std::uint16_t inhibit_100us(const Pdo& p) const;
+  MappingRules rules() const;
+
+  Node& node_;
+  std::vector<Rpdo> rpdos_;
+  std::vector<Tpdo> tpdos_;
+};
+
+}  // namespace canopen

@@ -1,0 +1,54 @@
+// Store parameters (0x1010) and restore default parameters (0x1011), CiA 301 §7.5.2.13/14:
+// signature "save"/"load", groups by sub-index, restored defaults effective after the next reset.
+#pragma once
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "devices/canopen/parameter_store.h"
+
+namespace canopen {
+
+class Node;
+
+class StoreRestore {
+ public:
+  static constexpr std::uint32_t kSaveSignature = 0x65766173;  // "save"
+  static constexpr std::uint32_t kLoadSignature = 0x64616F6C;  // "load"
+
+  explicit StoreRestore(Node& node);
+  void bind_objects();
+
+  /// Power-on: reads non-volatile memory (the file); pending restores are forgotten.
+  bool power_on(std::string& error);
+  /// Resets [first, last] to defaults and applies the stored values (unless a restore is pending
+  /// for their group).
+  void load_area(std::uint16_t first, std::uint16_t last);
+
+  /// Saves group `sub` of 0x1010 now (also usable by devices that auto-save an object).
+  SdoAbort save_group(std::uint8_t sub);
+  /// Saves one entry immediately (objects a manual says are stored on write).
+  SdoAbort save_entry(std::uint16_t index, std::uint8_t sub);
+  SdoAbort restore_group(std::uint8_t sub);
+
+  ParameterStore& memory() { return store_; }
+  /// Injected failure of the non-volatile memory (fault injection): save/restore abort
+  /// with 0x06060000.
+  void set_failing(bool failing) { failing_ = failing; }
+
+ private:
+  using Ranges = std::vector<std::pair<std::uint16_t, std::uint16_t>>;
+  Ranges group_ranges(std::uint8_t sub) const;
+  bool in_pending_restore(std::uint16_t index) const;
+  static bool storable(const OdEntry& e);
+
+  Node& node_;
+  ParameterStore store_;
+  std::set<std::uint8_t> pending_restore_;
+  bool failing_ = false;
+};
+
+}  // namespace canopen

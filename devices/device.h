@@ -1,0 +1,55 @@
+// An emulated product: a CANopen node, the behaviour its manual describes, and its ports to the
+// plant. The CLI (`vplant node --device NAME`) and scenarios create devices through the product
+// registry (registry.h) and talk to them only through this interface.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "devices/canopen/node.h"
+#include "sim/ports.h"
+
+namespace devices {
+
+/// How to build a device. `settings` are the product's configuration knobs (every [R] reading
+/// of its manual that changes what the bus sees), by name, as text; each product validates its
+/// own and rejects unknown names.
+struct DeviceOptions {
+  std::uint8_t node_id = 0;  ///< 0 = the product's factory default
+  std::string variant;       ///< "" = the product's default variant
+  std::map<std::string, std::string> settings;
+  std::string store_path;    ///< non-volatile memory file ("" = in memory for the run)
+};
+
+struct FaultInfo {
+  std::string name;         ///< e.g. "magnet_lost", "cable_break", "over_temperature"
+  std::string description;
+};
+
+class Device {
+ public:
+  virtual ~Device() = default;
+
+  virtual canopen::Node& node() = 0;
+  /// Plant-facing ports in SI units (inputs: measured values; outputs: actuator commands).
+  /// Pointers stay valid for the device's lifetime.
+  virtual sim::PortList ports() = 0;
+  /// Sets an input port or a run-time quantity by name (`--set actual=0.25`); returns an error
+  /// message, empty on success.
+  virtual std::string set_input(std::string_view name, double value);
+  /// Faults this product can simulate (scenario fault injection).
+  virtual std::vector<FaultInfo> faults() const { return {}; }
+  /// Activates/clears a named fault; returns an error message, empty on success.
+  virtual std::string inject_fault(std::string_view name, bool active);
+
+  /// Power cycle as a scenario sees it. Devices with state that survives power-off (multiturn
+  /// counters, non-volatile memory) override and keep it.
+  virtual void power_off() { node().power_off(); }
+  virtual void power_on(sim::Time now) { node().power_on(now); }
+};
+
+}  // namespace devices

@@ -1,0 +1,86 @@
+// Heartbeat producer, node guarding, life guarding (node 5), frame level.
+#include "devices/canopen/error_control.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/devices/canopen/generic_node.h"
+#include "tests/support/canopen_harness.h"
+
+using vtest::Frame;
+using vtest::Frames;
+
+TEST(Heartbeat, ProducedAtThe1017Period) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  h.power_on();
+  h.take();
+  ASSERT_EQ(h.write(0x1800, 1, 0x80000185u, 4), 0u);  // keep the event TPDO out of the way
+  ASSERT_EQ(h.write(0x1017, 0, 100, 2), 0u);
+  h.take_times();
+  h.run_ms(350);
+  const auto times = h.take_times();
+  ASSERT_EQ(times.size(), 3u);
+  EXPECT_EQ((times[1] - times[0]).count(), 100000);
+  EXPECT_EQ((times[2] - times[1]).count(), 100000);
+  h.nmt(0x01, 5);
+  h.take();
+  h.run_ms(100);
+  EXPECT_EQ(h.take(), Frames{Frame(0x705, {0x05})});
+  h.nmt(0x02, 5);
+  h.take();
+  h.run_ms(100);
+  EXPECT_EQ(h.take(), Frames{Frame(0x705, {0x04})});  // heartbeat continues in Stopped
+  ASSERT_EQ(h.node().nmt_state(), canopen::NmtState::Stopped);
+  h.nmt(0x80, 5);
+  ASSERT_EQ(h.write(0x1017, 0, 0, 2), 0u);
+  h.take();
+  h.run_ms(500);
+  EXPECT_TRUE(h.take().empty());
+}
+
+TEST(NodeGuarding, ToggleBitAlternatesAndResetsWithCommunication) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  h.power_on();
+  h.take();
+  h.send(Frame::remote(0x705, 1));
+  h.send(Frame::remote(0x705, 1));
+  h.nmt(0x01, 5);
+  h.send(Frame::remote(0x705, 1));
+  EXPECT_EQ(h.take(), (Frames{Frame(0x705, {0x7F}), Frame(0x705, {0xFF}), Frame(0x705, {0x05})}));
+  h.nmt(0x82, 5);
+  h.run_ticks(1);
+  h.take();
+  h.send(Frame::remote(0x705, 1));
+  EXPECT_EQ(h.take(), Frames{Frame(0x705, {0x7F})});
+  // A data frame on 0x705 is not a guard request.
+  h.send(0x705, {0x00});
+  EXPECT_TRUE(h.take().empty());
+}
+
+TEST(LifeGuarding, TimeoutRaisesEmcyAndRecoveryClearsIt) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  h.power_on();
+  ASSERT_EQ(h.write(0x100C, 0, 100, 2), 0u);
+  ASSERT_EQ(h.write(0x100D, 0, 3, 1), 0u);
+  ASSERT_EQ(h.write(0x1029, 1, 1, 1), 0u);  // no state change on communication errors
+  h.send(Frame::remote(0x705, 1));  // arms life guarding
+  h.take();
+  h.run_ms(300);
+  EXPECT_TRUE(h.take().empty());
+  h.run_ms(2);
+  EXPECT_EQ(h.take(), Frames{Frame(0x085, {0x30, 0x81, 0x11, 0, 0, 0, 0, 0})});
+  h.run_ms(1000);
+  EXPECT_TRUE(h.take().empty());  // one EMCY per event
+  h.send(Frame::remote(0x705, 1));
+  EXPECT_EQ(h.take(), (Frames{Frame(0x705, {0xFF}), Frame(0x085, {0x00, 0x00, 0x00, 0, 0, 0, 0, 0})}));
+}
+
+TEST(LifeGuarding, ErrorBehaviourGoesPreOperationalFromOperational) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  h.power_on();
+  ASSERT_EQ(h.write(0x100C, 0, 10, 2), 0u);
+  ASSERT_EQ(h.write(0x100D, 0, 2, 1), 0u);
+  h.nmt(0x01, 5);
+  h.send(Frame::remote(0x705, 1));
+  h.run_ms(30);
+  EXPECT_EQ(h.node().nmt_state(), canopen::NmtState::PreOperational);  // 0x1029:01 = 0
+}

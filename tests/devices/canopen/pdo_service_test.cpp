@@ -1,0 +1,154 @@
+// RPDO/TPDO and SYNC, frame level (node 5). Default generic node:
+//   TPDO1 0x185 type 255: 0x6000 (U16) + 0x6002 (U8)      TPDO2 0x285 type 1: 0x6001 (I32)
+//   RPDO1 0x205 type 255: 0x6001 (I32) + 0x6000 (U16)     RPDO2 0x305 type 0: 0x6000 (U16)
+#include "devices/canopen/pdo_service.h"
+
+#include <gtest/gtest.h>
+
+#include "devices/canopen/emergency.h"
+#include "tests/devices/canopen/generic_node.h"
+#include "tests/support/canopen_harness.h"
+
+using vtest::Frame;
+using vtest::Frames;
+
+namespace {
+class PdoTest : public ::testing::Test {
+ protected:
+  PdoTest() : h(vtest::make_generic_od(), {}, 5) {
+    h.power_on();
+    h.take();
+  }
+  /// NMT start plus one tick (event-driven TPDOs go out in the tick after the transition).
+  void operational() {
+    h.nmt(0x01, 5);
+    h.run_ticks(1);
+  }
+  vtest::CanopenHarness h;
+};
+}  // namespace
+
+TEST_F(PdoTest, EventTpdoGoesOutOnEnteringOperationalAndOnChange) {
+  operational();
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x34, 0x12, 0x55})});
+  h.run_ms(10);
+  EXPECT_TRUE(h.take().empty());
+  h.node().od().set<std::uint16_t>(0x6000, 0, 0x0102);
+  h.run_ticks(1);
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x02, 0x01, 0x55})});
+}
+
+TEST_F(PdoTest, InhibitTimeSpacesEventPdos) {
+  ASSERT_EQ(h.write(0x1800, 3, 50, 2), 0u);  // 5 ms
+  operational();
+  EXPECT_EQ(h.take().size(), 1u);  // sent on entering Operational: inhibit runs from here
+  h.node().od().set<std::uint16_t>(0x6000, 0, 1);
+  h.run_ms(4);
+  EXPECT_TRUE(h.take().empty());
+  h.run_ms(2);
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x01, 0x00, 0x55})});
+}
+
+TEST_F(PdoTest, EventTimerRepeatsTheTpdo) {
+  ASSERT_EQ(h.write(0x1800, 5, 20, 2), 0u);
+  operational();
+  EXPECT_EQ(h.take().size(), 1u);
+  h.run_ms(60);
+  EXPECT_EQ(h.take_times().size(), 3u);  // at 20, 40 and 60 ms after the one on entering Operational
+}
+
+TEST_F(PdoTest, SyncTpdoEveryNthSync) {
+  ASSERT_EQ(h.write(0x1801, 2, 2, 1), 0u);  // every 2nd SYNC
+  operational();
+  h.take();
+  h.node().od().set<std::int32_t>(0x6001, 0, -2);
+  h.send(0x080, {});
+  EXPECT_TRUE(h.take().empty());
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0xFE, 0xFF, 0xFF, 0xFF})});
+  // SYNC in Pre-operational: nothing.
+  h.nmt(0x80, 5);
+  h.send(0x080, {});
+  h.send(0x080, {});
+  EXPECT_TRUE(h.take().empty());
+}
+
+TEST_F(PdoTest, RpdoWritesMappedObjectsAndSynchronousRpdoWaitsForSync) {
+  operational();
+  h.take();
+  h.send(0x205, {0x78, 0x56, 0x34, 0x12, 0xAA, 0xBB});
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x6001), 0x12345678u);
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 0xBBAA);
+  h.send(0x305, {0x11, 0x22});
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 0xBBAA);
+  h.send(0x080, {});
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 0x2211);
+}
+
+TEST_F(PdoTest, RpdoLengthErrorsRaiseEmcy8210And8220) {
+  operational();
+  h.take();
+  h.send(0x205, {1, 2, 3});
+  EXPECT_EQ(h.take(), Frames{Frame(0x085, {0x10, 0x82, 0x11, 0, 0, 0, 0, 0})});
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x6001), 0u);
+  h.send(0x205, {1, 0, 0, 0, 2, 0});  // correct length: error clears
+  EXPECT_EQ(h.take(), Frames{Frame(0x085, {0, 0, 0, 0, 0, 0, 0, 0})});
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x6001), 1u);
+}
+
+TEST_F(PdoTest, RpdoTooLongRaises8220ButIsProcessed) {
+  operational();
+  h.take();
+  h.send(0x205, {1, 0, 0, 0, 2, 0, 9, 9});
+  const auto frames = h.take();
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(frames.front(), Frame(0x085, {0x20, 0x82, 0x11, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x6001), 1u);
+}
+
+TEST_F(PdoTest, RemoteRequestAnswersWithCurrentData) {
+  operational();
+  h.take();
+  h.send(Frame::remote(0x285, 4));
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0, 0, 0, 0})});
+}
+
+TEST_F(PdoTest, DynamicMappingProcedure) {
+  // CiA 301: disable the PDO, sub0 = 0, write entries, sub0 = n, enable.
+  EXPECT_EQ(h.write(0x1A00, 1, 0x60010020, 4), 0x08000022u);  // PDO still valid
+  ASSERT_EQ(h.write(0x1800, 1, 0x80000185, 4), 0u);
+  EXPECT_EQ(h.write(0x1A00, 1, 0x60010020, 4), 0x08000022u);  // sub0 still 2
+  ASSERT_EQ(h.write(0x1A00, 0, 0, 1), 0u);
+  EXPECT_EQ(h.write(0x1A00, 1, 0x60030010, 4), 0x06040041u);  // not mappable
+  EXPECT_EQ(h.write(0x1A00, 1, 0x7FFF0010, 4), 0x06040041u);  // does not exist
+  EXPECT_EQ(h.write(0x1A00, 1, 0x60010010, 4), 0x06040041u);  // wrong length
+  ASSERT_EQ(h.write(0x1A00, 1, 0x60010020, 4), 0u);
+  ASSERT_EQ(h.write(0x1A00, 2, 0x60010020, 4), 0u);
+  ASSERT_EQ(h.write(0x1A00, 3, 0x60000010, 4), 0u);
+  EXPECT_EQ(h.write(0x1A00, 0, 3, 1), 0x06040042u);  // 80 bits
+  ASSERT_EQ(h.write(0x1A00, 0, 2, 1), 0u);
+  EXPECT_EQ(h.write(0x1A00, 0, 9, 1), 0x06090031u);  // more entries than exist
+  ASSERT_EQ(h.write(0x1800, 1, 0x00000185, 4), 0u);
+  EXPECT_EQ(h.node().pdo().tpdo_length(1), 8);
+  operational();
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0, 0, 0, 0, 0, 0, 0, 0})});
+}
+
+TEST_F(PdoTest, CobIdChangeRequiresInvalidPdoAndTypesAreChecked) {
+  EXPECT_EQ(h.write(0x1800, 1, 0x00000190, 4), 0x06090030u);
+  ASSERT_EQ(h.write(0x1800, 1, 0x80000185, 4), 0u);
+  ASSERT_EQ(h.write(0x1800, 1, 0x00000190, 4), 0u);
+  EXPECT_EQ(h.write(0x1800, 2, 241, 1), 0x06090030u);
+  EXPECT_EQ(h.write(0x1400, 2, 252, 1), 0x06090030u);  // RTR types are TPDO-only
+  operational();
+  EXPECT_EQ(h.take(), Frames{Frame(0x190, {0x34, 0x12, 0x55})});
+}
+
+TEST_F(PdoTest, DisabledPdoIsNotSentOrReceived) {
+  ASSERT_EQ(h.write(0x1800, 1, 0x80000185, 4), 0u);
+  ASSERT_EQ(h.write(0x1400, 1, 0x80000205, 4), 0u);
+  operational();
+  h.send(0x205, {1, 0, 0, 0, 2, 0});
+  EXPECT_TRUE(h.take().empty());
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x6001), 0u);
+}

@@ -1,0 +1,127 @@
+#include "devices/canopen/store_restore.h"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "tests/devices/canopen/generic_node.h"
+#include "tests/support/canopen_harness.h"
+
+using vtest::Frame;
+using vtest::Frames;
+
+namespace {
+std::string temp_path() {
+  char path[] = "/tmp/vplant-store-XXXXXX";
+  const int fd = mkstemp(path);
+  close(fd);
+  std::remove(path);
+  return path;
+}
+constexpr std::uint32_t kSave = 0x65766173, kLoad = 0x64616F6C;
+}  // namespace
+
+TEST(StoreRestore, SaveSurvivesPowerCycleAndRestoreReturnsDefaults) {
+  canopen::NodePolicy p;
+  p.store.path = temp_path();
+  vtest::CanopenHarness h(vtest::make_generic_od(), p, 5);
+  h.power_on();
+  ASSERT_EQ(h.write(0x2000, 0, 42, 1), 0u);
+  ASSERT_EQ(h.write(0x1017, 0, 500, 2), 0u);
+  EXPECT_EQ(h.write(0x1010, 1, 0x12345678, 4), 0x08000020u);  // wrong signature
+  ASSERT_EQ(h.write(0x1010, 1, kSave, 4), 0u);
+  EXPECT_EQ(h.read_u(0x1010, 1), 1u);  // reads the capability, not the signature
+  h.node().power_off();
+  h.power_on();
+  EXPECT_EQ(h.node().od().get<int>(0x2000), 42);
+  EXPECT_EQ(h.node().od().get<int>(0x1017), 500);
+  // Restore: the values in use stay until the next reset.
+  ASSERT_EQ(h.write(0x1011, 1, kLoad, 4), 0u);
+  EXPECT_EQ(h.node().od().get<int>(0x2000), 42);
+  h.nmt(0x81, 5);
+  h.run_ticks(1);
+  EXPECT_EQ(h.node().od().get<int>(0x2000), 7);
+  EXPECT_EQ(h.node().od().get<int>(0x1017), 0);
+  std::remove(p.store.path.c_str());
+}
+
+TEST(StoreRestore, GroupsSaveOnlyTheirArea) {
+  canopen::NodePolicy p;
+  vtest::CanopenHarness h(vtest::make_generic_od(), p, 5);
+  h.power_on();
+  ASSERT_EQ(h.write(0x2000, 0, 42, 1), 0u);
+  ASSERT_EQ(h.write(0x1017, 0, 500, 2), 0u);
+  ASSERT_EQ(h.write(0x1010, 2, kSave, 4), 0u);  // communication only
+  h.nmt(0x81, 5);
+  h.run_ticks(1);
+  EXPECT_EQ(h.node().od().get<int>(0x2000), 7);
+  EXPECT_EQ(h.node().od().get<int>(0x1017), 500);
+}
+
+TEST(StoreRestore, NodeRelativeCobIdsFollowANewNodeId) {
+  canopen::NodePolicy p;
+  vtest::CanopenHarness h(vtest::make_generic_od(), p, 5);
+  h.power_on();
+  ASSERT_EQ(h.write(0x1010, 1, kSave, 4), 0u);
+  h.node().set_pending_node_id(9);
+  h.nmt(0x82, 5);
+  h.run_ticks(1);
+  EXPECT_EQ(h.take().back(), Frame(0x709, {0x00}));
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x1800, 1), 0x189u);
+}
+
+TEST(StoreRestore, FailingMemoryAborts06060000) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  h.power_on();
+  h.node().store().set_failing(true);
+  EXPECT_EQ(h.write(0x1010, 1, kSave, 4), 0x06060000u);
+}
+
+TEST(ParameterStore, KillDuringSaveLeavesOldOrNewSetNeverTorn) {
+  const std::string path = temp_path();
+  canopen::ParameterStore store(path);
+  store.put(0x2000, 0, {false, {1}});
+  std::string error;
+  ASSERT_TRUE(store.save(error)) << error;
+  // Children write a large new set and are killed at random moments; the file always parses
+  // and holds either the complete old or the complete new set.
+  for (int round = 0; round < 20; ++round) {
+    const pid_t pid = fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      canopen::ParameterStore big(path);
+      for (int i = 0; i < 5000; ++i) big.put(static_cast<std::uint16_t>(0x2000 + i), 0, {false, {2, 2, 2, 2}});
+      for (;;) {
+        std::string e;
+        big.save(e);
+      }
+    }
+    usleep(static_cast<useconds_t>(200 + round * 150));
+    kill(pid, SIGKILL);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    canopen::ParameterStore check(path);
+    ASSERT_TRUE(check.load(error)) << error;
+    const auto n = check.values().size();
+    EXPECT_TRUE(n == 1 || n == 5000) << n;
+  }
+  std::remove(path.c_str());
+  std::remove((path + ".tmp").c_str());
+}
+
+TEST(ParameterStore, MalformedFileIsReportedWithLine) {
+  const std::string path = temp_path();
+  {
+    std::ofstream f(path);
+    f << "# vplant parameter store v1\n2000:00=01\nbogus line\n";
+  }
+  canopen::ParameterStore store(path);
+  std::string error;
+  EXPECT_FALSE(store.load(error));
+  EXPECT_NE(error.find(path + ":3:"), std::string::npos) << error;
+  EXPECT_TRUE(store.values().empty());
+  std::remove(path.c_str());
+}
