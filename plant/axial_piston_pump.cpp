@@ -60,9 +60,7 @@ const ComponentType kType{
     kConnectors,
     kSignals,
     check,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<AxialPistonPump>(std::move(name), std::move(values));
-    },
+    make_component<AxialPistonPump>,
 };
 
 }  // namespace

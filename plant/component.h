@@ -4,6 +4,7 @@
 // the plant resolves to pressure nodes and rigid bodies; it never knows who is connected.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -79,6 +80,12 @@ class Component {
   std::vector<double> signals_;
   std::vector<int> targets_;
 };
+
+/// The factory a ComponentType points at: `ComponentType{..., make_component<Tank>}`.
+template <typename T>
+std::unique_ptr<Component> make_component(std::string name, std::vector<double> values) {
+  return std::make_unique<T>(std::move(name), std::move(values));
+}
 
 /// Reads a current, command or other device-written input: non-finite values count as 0, since a
 /// device that writes NaN must not poison the physics.

@@ -55,9 +55,7 @@ const ComponentType kType{
     kConnectors,
     kSignals,
     check,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<DifferentialCylinder>(std::move(name), std::move(values));
-    },
+    make_component<DifferentialCylinder>,
 };
 
 double circle(double d) { return std::numbers::pi / 4.0 * d * d; }

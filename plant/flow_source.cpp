@@ -22,9 +22,7 @@ const ComponentType kType{
     kConnectors,
     {},
     nullptr,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<FlowSource>(std::move(name), std::move(values));
-    },
+    make_component<FlowSource>,
 };
 
 }  // namespace

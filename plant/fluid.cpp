@@ -25,9 +25,7 @@ const ComponentType kType{
     {},
     {},
     nullptr,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<Fluid>(std::move(name), std::move(values));
-    },
+    make_component<Fluid>,
 };
 
 }  // namespace

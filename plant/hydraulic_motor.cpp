@@ -40,9 +40,7 @@ const ComponentType kType{
     kConnectors,
     kSignals,
     nullptr,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<HydraulicMotor>(std::move(name), std::move(values));
-    },
+    make_component<HydraulicMotor>,
 };
 
 }  // namespace

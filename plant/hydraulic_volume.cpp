@@ -19,9 +19,7 @@ const ComponentType kType{
     kConnectors,
     {},
     nullptr,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<HydraulicVolume>(std::move(name), std::move(values));
-    },
+    make_component<HydraulicVolume>,
 };
 
 }  // namespace

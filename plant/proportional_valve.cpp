@@ -54,9 +54,7 @@ const ComponentType kType{
     kConnectors,
     kSignals,
     check,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<ProportionalValve>(std::move(name), std::move(values));
-    },
+    make_component<ProportionalValve>,
 };
 
 }  // namespace

@@ -29,9 +29,7 @@ const ComponentType kType{
     kConnectors,
     kSignals,
     nullptr,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<ReliefValve>(std::move(name), std::move(values));
-    },
+    make_component<ReliefValve>,
 };
 
 }  // namespace

@@ -30,9 +30,7 @@ const ComponentType kType{
     kConnectors,
     kSignals,
     nullptr,
-    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
-      return std::make_unique<RotaryShaft>(std::move(name), std::move(values));
-    },
+    make_component<RotaryShaft>,
 };
 
 }  // namespace

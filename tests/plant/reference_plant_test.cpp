@@ -112,8 +112,8 @@ Trajectory trajectory(double max_step) {
 
 TEST(ReferencePlant, HalvingTheStepChangesTheTrajectoryByLessThanHalfAPercent) {
   // Default step (1 ms) against half of it over the 10 s exercise. Positions and angles: largest
-  // deviation; speeds and pressures: RMS deviation (end-stop impacts and cavitation onsets are
-  // events whose timing moves by up to a step, so pointwise values there are first order).
+  // deviation; speeds and pressures: RMS deviation (end-stop impacts are events whose timing
+  // moves by up to a step, so pointwise values there are first order).
   // Each relative to the signal's range over the run. Tolerance 0.5 % (issue 6).
   const Trajectory coarse = trajectory(1e-3), fine = trajectory(5e-4);
   for (const auto& name : kSignals) {
