@@ -73,6 +73,14 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
     od.add_check(comm_index, sub, preop_only, CheckStage::State);
     od.add_observer(comm_index, sub, reload_all);
   }
+  if (dir == PdoDirection::Transmit && od.entry(comm_index, 5) && od.entry(comm_index, 5)->writable()) {
+    od.add_observer(comm_index, 5, [this, comm_index](OdEntry&, Origin) {
+      if (!node_.policy().pdo.event_timer_restart_on_write) return;
+      for (auto& t : tpdos_) {
+        if (t.comm_index == comm_index) t.next_timer = node_.now() + sim::milliseconds(event_timer_ms(t));
+      }
+    });
+  }
   if (od.entry(comm_index, 1) && od.entry(comm_index, 1)->writable()) {
     od.add_check(comm_index, 1, [this, &od, comm_index](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
       if (!external(origin)) return SdoAbort::None;
@@ -145,7 +153,7 @@ void PdoService::load(Pdo& p, PdoDirection dir) {
   p.type = type ? type->as<std::uint8_t>() : 255;
   const auto* count = od.entry(p.map_index, 0);
   const std::uint8_t n = count ? count->as<std::uint8_t>() : 0;
-  p.valid = !(v & kInvalid);
+  p.valid = !(v & kInvalid) && !p.device_disabled;
   if (resolve_mapping(od, p.map_index, n, dir, rules(), p.mapping) != SdoAbort::None) {
     p.mapping = PdoMapping{};  // an invalid stored mapping makes the PDO send/accept nothing
   }
@@ -237,6 +245,11 @@ void PdoService::apply_rpdo(Rpdo& r) {
       const std::span<const std::uint8_t> slot(r.buffer.data() + pos, m.bytes);
       if (m.bytes == m.entry->size()) {
         (void)od.write(*m.entry, slot, Origin::Pdo);  // a refused PDO value is dropped silently
+      } else if (m.entry->size() <= 8) {
+        std::array<std::uint8_t, 8> widened{};  // width conversion without allocating per frame
+        const std::span<std::uint8_t> out(widened.data(), m.entry->size());
+        resize_value_into(m.entry->type, slot, out);
+        (void)od.write(*m.entry, out, Origin::Pdo);
       } else {
         const Bytes widened = resize_value(m.entry->type, slot, m.entry->size());
         (void)od.write(*m.entry, widened, Origin::Pdo);
@@ -295,6 +308,36 @@ void PdoService::try_send_event(Tpdo& t, sim::Time now) {
   transmit(t, data, now);
 }
 
+void PdoService::set_active(PdoDirection dir, int number, bool active) {
+  if (dir == PdoDirection::Receive) {
+    for (auto& r : rpdos_) {
+      if (r.number != number) continue;
+      r.device_disabled = !active;
+      load(r, dir);
+      r.latched = false;
+    }
+  } else {
+    for (auto& t : tpdos_) {
+      if (t.number != number) continue;
+      t.device_disabled = !active;
+      load(t, dir);
+      t.event_pending = false;
+    }
+  }
+  node_.rebuild_dispatch();
+}
+
+bool PdoService::active(PdoDirection dir, int number) const {
+  if (dir == PdoDirection::Receive) {
+    for (const auto& r : rpdos_)
+      if (r.number == number) return !r.device_disabled;
+  } else {
+    for (const auto& t : tpdos_)
+      if (t.number == number) return !t.device_disabled;
+  }
+  return false;
+}
+
 void PdoService::request_tpdo(int number) {
   for (auto& t : tpdos_) {
     if (t.number != number) continue;
@@ -304,7 +347,7 @@ void PdoService::request_tpdo(int number) {
 }
 
 void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time now) {
-  if (!pdo_allowed(node_.nmt_state()) || !frame.rtr) return;
+  if (!pdo_allowed(node_.nmt_state()) || !frame.rtr || !node_.policy().pdo.tpdo_remote_requests) return;
   auto it = std::find_if(tpdos_.begin(), tpdos_.end(), [number](const Tpdo& t) { return t.number == number; });
   if (it == tpdos_.end() || !it->valid || !it->rtr_allowed || it->mapping.length == 0) return;
   Tpdo& t = *it;

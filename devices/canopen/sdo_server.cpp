@@ -11,6 +11,18 @@ constexpr std::uint16_t kSdoServerParameter = 0x1200;
 constexpr std::size_t kBufferReserve = 1024;
 
 std::uint16_t index_of(const std::uint8_t* req) { return static_cast<std::uint16_t>(req[1] | req[2] << 8); }
+
+/// Widens or truncates a numeric value in the transfer buffer (its capacity is reserved: no
+/// allocation per request).
+void resize_in_place(DataType type, Bytes& data, std::size_t size) {
+  std::array<std::uint8_t, 8> tmp{};
+  if (size > tmp.size()) {
+    data = resize_value(type, data, size);
+    return;
+  }
+  resize_value_into(type, data, std::span<std::uint8_t>(tmp.data(), size));
+  data.assign(tmp.begin(), tmp.begin() + static_cast<std::ptrdiff_t>(size));
+}
 }  // namespace
 
 SdoServer::SdoServer(Node& node) : node_(node) { buffer_.reserve(kBufferReserve); }
@@ -89,14 +101,14 @@ SdoAbort SdoServer::fit_size(const OdEntry& e, Bytes& data, bool size_indicated)
   }
   if (data.size() == fixed) return SdoAbort::None;
   if (!size_indicated) {
-    data = resize_value(e.type, data, fixed);
+    resize_in_place(e.type, data, fixed);
     return SdoAbort::None;
   }
   using Mode = SdoPolicy::SizeMode;
   const Mode mode = node_.policy().sdo.size_mode;
   if (data.size() < fixed) {
     if (mode == Mode::Strict) return SdoAbort::LengthTooLow;
-    data = resize_value(e.type, data, fixed);
+    resize_in_place(e.type, data, fixed);
     return SdoAbort::None;
   }
   // Longer than the object.
@@ -118,6 +130,7 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
   const std::uint16_t index = index_of(req);
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
+  if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
   if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
   if (const auto code = node_.od().object(index)->code; code == ObjectCode::DefType || code == ObjectCode::DefStruct) {
     return abort(index, sub, node_.policy().sdo.type_definition_write);
@@ -187,6 +200,7 @@ void SdoServer::initiate_upload(const std::uint8_t* req) {
   const std::uint16_t index = index_of(req);
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
+  if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
   if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
   if (auto a = node_.od().read(*e, Origin::Sdo); a != SdoAbort::None) return abort(index, sub, a);
   const std::size_t size = e->value.size();
