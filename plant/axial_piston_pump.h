@@ -55,10 +55,6 @@ class AxialPistonPump final : public Component {
 
   AxialPistonPump(std::string name, std::vector<double> values);
 
-  double swivel_angle() const { return alpha_; }
-  double geometric_flow(double alpha) const;  ///< Vg/(2 pi) alpha n, m^3/s
-  double leakage_coefficient() const { return leak_; }
-
   void read_inputs() override;
   void configure_step(double h) override;
   void advance(double h) override;
@@ -67,6 +63,7 @@ class AxialPistonPump final : public Component {
 
  private:
   void parameters_changed() override;
+  double geometric_flow(double alpha) const;  ///< Vg/(2 pi) alpha n, m^3/s
 
   SecondOrderLag pilot_;
   double command_ = 0.0;

@@ -37,10 +37,6 @@ class DifferentialCylinder final : public Component {
 
   DifferentialCylinder(std::string name, std::vector<double> values);
 
-  double area_a() const { return area_a_; }
-  double area_b() const { return area_b_; }
-  DofId rod() const { return rod_; }
-
   void create_bodies(RigidBodyWorld& world) override;
   void add_volumes(const CircuitState& state, std::vector<double>& node_volume) const override;
   void add_inertia(std::vector<double>& dof_mass) const override;

@@ -30,9 +30,6 @@ class HydraulicMotor final : public Component {
 
   HydraulicMotor(std::string name, std::vector<double> values);
 
-  double displacement_per_radian() const { return d_rad_; }
-  double leakage_coefficient() const { return leak_; }
-
   void add_volumes(const CircuitState& state, std::vector<double>& node_volume) const override;
   void add_inertia(std::vector<double>& dof_mass) const override;
   void stamp(Equations& eq) const override;

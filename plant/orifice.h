@@ -15,10 +15,12 @@ class Orifice final : public Component {
   static const ComponentType& type_info();
 
   Orifice(std::string name, std::vector<double> values);
-  /// Flow coefficient K (m^3/s per sqrt(Pa)) for the given fluid density.
-  double flow_coefficient(double density) const;
   void stamp(Equations& eq) const override;
   void publish(const CircuitState& state, double dt) override;
+
+ private:
+  /// Flow coefficient K (m^3/s per sqrt(Pa)) for the given fluid density.
+  double flow_coefficient(double density) const;
 };
 
 }  // namespace plant

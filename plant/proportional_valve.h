@@ -39,13 +39,6 @@ class ProportionalValve final : public Component {
 
   ProportionalValve(std::string name, std::vector<double> values);
 
-  /// Spool position commanded by the currents (normalised, -1..1).
-  double commanded_position(double current_a, double current_b) const;
-  /// Metering opening (0..1) of an edge for spool position s (s = x for P->A/B->T, -x otherwise).
-  double opening(double s) const;
-  double flow_coefficient() const { return kv_; }
-  double spool_position() const { return spool_.position(); }
-
   void read_inputs() override;
   void configure_step(double h) override;
   void advance(double h) override;
@@ -54,6 +47,10 @@ class ProportionalValve final : public Component {
 
  private:
   void parameters_changed() override;
+  /// Spool position commanded by the currents (normalised, -1..1).
+  double commanded_position(double current_a, double current_b) const;
+  /// Metering opening (0..1) of an edge for spool position s (s = x for P->A/B->T, -x otherwise).
+  double opening(double s) const;
   void stamp_edge(Equations& eq, int from, int to, double open) const;
   double edge_flow(const CircuitState& state, int from, int to, double open) const;
 
