@@ -64,8 +64,8 @@ void ParameterStore::erase_range(std::uint16_t first, std::uint16_t last) {
 }
 
 bool ParameterStore::load(std::string& error) {
+  if (path_.empty()) return true;  // memory only: what was saved stays, like NV memory in a run
   values_.clear();
-  if (path_.empty()) return true;
   std::ifstream in(path_);
   if (!in) return true;  // nothing stored yet
   std::map<Key, Value> loaded;

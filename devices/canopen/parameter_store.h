@@ -27,7 +27,8 @@ class ParameterStore {
   const std::string& path() const { return path_; }
   void set_path(std::string path) { path_ = std::move(path); }
 
-  /// Reads the file (a missing file is an empty store). Malformed lines are reported in
+  /// Reads the file (a missing file is an empty store; without a path the values in memory
+  /// are kept, so they survive power cycles within a run). Malformed lines are reported in
   /// `error` as "file:line: reason" and the store stays empty (never a half-read set).
   bool load(std::string& error);
   /// Writes the file atomically. Without a path it only keeps the values in memory.

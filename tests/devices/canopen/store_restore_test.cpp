@@ -48,6 +48,17 @@ TEST(StoreRestore, SaveSurvivesPowerCycleAndRestoreReturnsDefaults) {
   std::remove(p.store.path.c_str());
 }
 
+TEST(StoreRestore, WithoutAFileSavedValuesSurviveAPowerCycleInTheRun) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  h.power_on();
+  ASSERT_EQ(h.write(0x2000, 0, 42, 1), 0u);
+  ASSERT_EQ(h.write(0x1010, 1, kSave, 4), 0u);
+  ASSERT_EQ(h.write(0x2000, 0, 43, 1), 0u);
+  h.node().power_off();
+  h.power_on();
+  EXPECT_EQ(h.node().od().get<int>(0x2000), 42);
+}
+
 TEST(StoreRestore, GroupsSaveOnlyTheirArea) {
   canopen::NodePolicy p;
   vtest::CanopenHarness h(vtest::make_generic_od(), p, 5);
