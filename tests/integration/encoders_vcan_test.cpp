@@ -5,6 +5,8 @@
 // EMCY on magnet loss (HLT 1100) and on over-temperature (WDGA). Waits are bounded by generous
 // timeouts (TCG emulation), never by sleeps that must be right.
 #include <gtest/gtest.h>
+
+#include "tests/support/vcan_master.h"
 #include <linux/can.h>
 #include <linux/can/raw.h>
 #include <net/if.h>
@@ -27,109 +29,12 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-using std::chrono::milliseconds;
-using Bytes = std::vector<std::uint8_t>;
+using namespace vtest::vcan;
 
-struct Frame {
-  std::uint32_t id = 0;
-  Bytes data;
-};
-
-class CanSocket {
+// `vplant ...` as a child process, stderr kept for failure messages.
+class Vplant : public ChildProcess {
  public:
-  explicit CanSocket(const char* iface) {
-    fd_ = ::socket(PF_CAN, SOCK_RAW, CAN_RAW);
-    if (fd_ < 0) return;
-    ifreq ifr{};
-    std::snprintf(ifr.ifr_name, sizeof(ifr.ifr_name), "%s", iface);
-    sockaddr_can addr{};
-    addr.can_family = AF_CAN;
-    if (::ioctl(fd_, SIOCGIFINDEX, &ifr) < 0) {
-      ::close(fd_);
-      fd_ = -1;
-      return;
-    }
-    addr.can_ifindex = ifr.ifr_ifindex;
-    if (::bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0) {
-      ::close(fd_);
-      fd_ = -1;
-    }
-  }
-  ~CanSocket() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  CanSocket(const CanSocket&) = delete;
-  CanSocket& operator=(const CanSocket&) = delete;
-  bool ok() const { return fd_ >= 0; }
-
-  void send(std::uint32_t id, Bytes data, bool rtr = false) {
-    can_frame f{};
-    f.can_id = id | (rtr ? CAN_RTR_FLAG : 0);
-    f.can_dlc = static_cast<std::uint8_t>(data.size());
-    std::copy(data.begin(), data.end(), f.data);
-    ASSERT_EQ(::write(fd_, &f, sizeof(f)), static_cast<ssize_t>(sizeof(f)));
-  }
-  std::optional<Frame> wait_for(const std::function<bool(const Frame&)>& match, milliseconds timeout = milliseconds(5000)) {
-    const auto deadline = Clock::now() + timeout;
-    for (;;) {
-      const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now()).count();
-      if (left <= 0) return std::nullopt;
-      pollfd pfd{fd_, POLLIN, 0};
-      if (::poll(&pfd, 1, static_cast<int>(left)) <= 0) continue;
-      can_frame f{};
-      if (::read(fd_, &f, sizeof(f)) != static_cast<ssize_t>(sizeof(f))) continue;
-      Frame got{f.can_id & CAN_SFF_MASK, Bytes(f.data, f.data + f.can_dlc)};
-      if (match(got)) return got;
-    }
-  }
-  std::optional<Frame> wait_for(std::uint32_t id, milliseconds timeout = milliseconds(5000)) {
-    return wait_for([id](const Frame& f) { return f.id == id; }, timeout);
-  }
-  /// A request and the first answer on `reply_id`.
-  std::optional<Frame> ask(std::uint32_t id, Bytes data, std::uint32_t reply_id) {
-    data.resize(8, 0);
-    send(id, data);
-    return wait_for(reply_id);
-  }
-
- private:
-  int fd_ = -1;
-};
-
-// `vplant node ...` as a child process, stderr kept for failure messages.
-class Vplant {
- public:
-  explicit Vplant(std::vector<std::string> args) {
-    char path[] = "/tmp/vplant-encoders-stderr-XXXXXX";
-    const int fd = ::mkstemp(path);
-    stderr_path_ = path;
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::dup2(fd, 2);
-      std::vector<char*> argv{const_cast<char*>(VPLANT_BINARY)};
-      for (auto& a : args) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(VPLANT_BINARY, argv.data());
-      ::_exit(127);
-    }
-    ::close(fd);
-  }
-  ~Vplant() {
-    ::kill(pid_, SIGKILL);
-    ::waitpid(pid_, nullptr, 0);
-    std::remove(stderr_path_.c_str());
-  }
-  std::string stderr_text() const {
-    std::ifstream in(stderr_path_);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-  }
-
- private:
-  pid_t pid_ = -1;
-  std::string stderr_path_;
+  explicit Vplant(const std::vector<std::string>& args) : ChildProcess(VPLANT_BINARY, args) {}
 };
 
 Bytes eight(Bytes b) {
@@ -147,7 +52,7 @@ TEST(EncodersVcan, Hlt1100) {
       << "no boot-up 705#00\n" << node.stderr_text();
   // EMCY on magnet loss (it leaves the measuring range): FF00, error register 21h. Waited for
   // first, so no other wait can drop it.
-  const auto emcy = can.wait_for(0x085, milliseconds(30000));
+  const auto emcy = can.wait_for_id(0x085, milliseconds(30000));
   ASSERT_TRUE(emcy) << node.stderr_text();
   EXPECT_EQ(emcy->data, eight({0x00, 0xFF, 0x21}));
   // Identity.
@@ -159,9 +64,9 @@ TEST(EncodersVcan, Hlt1100) {
   EXPECT_EQ(r->data, eight({0x43, 0x18, 0x10, 0x01, 0xDA}));
   // PDO on SYNC (DLC 0) in Operational: TPDO2 keeps the last valid position, 4999 steps.
   can.send(0x000, {0x01, 0x05});
-  ASSERT_TRUE(can.wait_for(0x185));  // the one-shot TPDO1 after Start
+  ASSERT_TRUE(can.wait_for_id(0x185));  // the one-shot TPDO1 after Start
   can.send(0x080, {});
-  const auto tpdo2 = can.wait_for(0x285);
+  const auto tpdo2 = can.wait_for_id(0x285);
   ASSERT_TRUE(tpdo2);
   EXPECT_EQ(tpdo2->data, (Bytes{0x87, 0x13, 0x00, 0x00}));
   // LSS node-ID change: configuration, node-ID 12, store, Reset Communication → boot-up 70C.
@@ -186,12 +91,12 @@ TEST(EncodersVcan, WdgaMultiturn) {
   Vplant node({"node", "--device", "wdga", "--can", "vcan0", "--set", "angle=6.283185307179586", "--set",
                "temperature=105"});
   // Automatic bit-rate detection: silent until another node sends; a SYNC (as in the manual).
-  EXPECT_FALSE(can.wait_for(0x77F, milliseconds(1500))) << node.stderr_text();
+  EXPECT_FALSE(can.wait_for_id(0x77F, milliseconds(1500))) << node.stderr_text();
   can.send(0x080, eight({}));
   ASSERT_TRUE(can.wait_for([](const Frame& f) { return f.id == 0x77F && f.data == Bytes{0x00}; }, milliseconds(15000)))
       << "no boot-up 77F#00\n" << node.stderr_text();
   // EMCY: the start-up temperature sample is above the 100 °C limit.
-  const auto emcy = can.wait_for(0x0FF);
+  const auto emcy = can.wait_for_id(0x0FF);
   ASSERT_TRUE(emcy);
   EXPECT_EQ(emcy->data, eight({0x00, 0x42, 0x08, 0x10}));
   // Identity.
@@ -204,10 +109,10 @@ TEST(EncodersVcan, WdgaMultiturn) {
   // PDO on SYNC: TPDO2 (6004h) and TPDO3 (6008h) show one turn = 16384.
   can.send(0x000, {0x01, 0x00});
   can.send(0x080, {});
-  const auto tpdo2 = can.wait_for(0x2FF);
+  const auto tpdo2 = can.wait_for_id(0x2FF);
   ASSERT_TRUE(tpdo2);
   EXPECT_EQ(tpdo2->data, (Bytes{0x00, 0x40, 0x00, 0x00}));
-  const auto tpdo3 = can.wait_for(0x3FF);
+  const auto tpdo3 = can.wait_for_id(0x3FF);
   ASSERT_TRUE(tpdo3);
   EXPECT_EQ(tpdo3->data, eight({0x00, 0x40}));
   // LSS (only in Stopped/Pre-operational): node-ID 5, stored; Reset Node applies it.

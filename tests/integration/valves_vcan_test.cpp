@@ -6,6 +6,8 @@
 // guest runs under TCG emulation), never by sleeps that must be right.
 #include <fcntl.h>
 #include <gtest/gtest.h>
+
+#include "tests/support/vcan_master.h"
 #include <linux/can.h>
 #include <linux/can/raw.h>
 #include <net/if.h>
@@ -29,197 +31,15 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-using std::chrono::milliseconds;
+using namespace vtest::vcan;
 
-const char* const kVplant = VPLANT_BINARY;
-
-struct Frame {
-  std::uint32_t id = 0;
-  std::vector<std::uint8_t> data;
-  Clock::time_point at{};
-};
-
-class CanSocket {
+// `vplant ...` as a child process, stderr kept for failure messages.
+class Vplant : public ChildProcess {
  public:
-  explicit CanSocket(const char* iface) {
-    fd_ = ::socket(PF_CAN, SOCK_RAW, CAN_RAW);
-    if (fd_ < 0) return;
-    ifreq ifr{};
-    std::snprintf(ifr.ifr_name, sizeof(ifr.ifr_name), "%s", iface);
-    sockaddr_can addr{};
-    addr.can_family = AF_CAN;
-    if (::ioctl(fd_, SIOCGIFINDEX, &ifr) < 0) {
-      ::close(fd_);
-      fd_ = -1;
-      return;
-    }
-    addr.can_ifindex = ifr.ifr_ifindex;
-    if (::bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0) {
-      ::close(fd_);
-      fd_ = -1;
-    }
-  }
-  ~CanSocket() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  CanSocket(const CanSocket&) = delete;
-  CanSocket& operator=(const CanSocket&) = delete;
-  bool ok() const { return fd_ >= 0; }
-
-  void send(std::uint32_t id, std::vector<std::uint8_t> data) {
-    can_frame f{};
-    f.can_id = id;
-    f.can_dlc = static_cast<std::uint8_t>(data.size());
-    std::copy(data.begin(), data.end(), f.data);
-    ASSERT_EQ(::write(fd_, &f, sizeof(f)), static_cast<ssize_t>(sizeof(f)));
-  }
-
-  /// The next frame for which `match` holds, within `timeout` (others are dropped).
-  std::optional<Frame> wait_for(const std::function<bool(const Frame&)>& match, milliseconds timeout = milliseconds(3000)) {
-    const auto deadline = Clock::now() + timeout;
-    for (;;) {
-      const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now()).count();
-      if (left <= 0) return std::nullopt;
-      pollfd pfd{fd_, POLLIN, 0};
-      if (::poll(&pfd, 1, static_cast<int>(left)) <= 0) continue;
-      can_frame f{};
-      if (::read(fd_, &f, sizeof(f)) != static_cast<ssize_t>(sizeof(f))) continue;
-      Frame got{f.can_id & CAN_SFF_MASK, std::vector<std::uint8_t>(f.data, f.data + f.can_dlc), Clock::now()};
-      if (match(got)) return got;
-    }
-  }
-  std::optional<Frame> wait_for_id(std::uint32_t id, milliseconds timeout = milliseconds(3000)) {
-    return wait_for([id](const Frame& f) { return f.id == id; }, timeout);
-  }
-  /// Drops everything queued.
-  void drain() {
-    while (wait_for([](const Frame&) { return true; }, milliseconds(0))) {
-    }
-  }
-
- private:
-  int fd_ = -1;
+  explicit Vplant(const std::vector<std::string>& args) : ChildProcess(VPLANT_BINARY, args) {}
 };
 
-// SDO client on 0x600+N / 0x580+N.
-class SdoClient {
- public:
-  SdoClient(CanSocket& can, std::uint8_t node) : can_(can), node_(node) {}
 
-  std::optional<Frame> request(std::vector<std::uint8_t> bytes) {
-    bytes.resize(8, 0);
-    can_.send(0x600u + node_, bytes);
-    return can_.wait_for_id(0x580u + node_);
-  }
-  /// Value bytes, or nullopt with `abort` set.
-  std::optional<std::vector<std::uint8_t>> upload(std::uint16_t index, std::uint8_t sub, std::uint32_t* abort = nullptr,
-                                                  bool* segmented = nullptr) {
-    auto r = request({0x40, static_cast<std::uint8_t>(index), static_cast<std::uint8_t>(index >> 8), sub});
-    if (!r) return std::nullopt;
-    if (r->data[0] == 0x80) {
-      if (abort) *abort = code(*r);
-      return std::nullopt;
-    }
-    if ((r->data[0] & 0xE2) == 0x42) {
-      const std::size_t n = (r->data[0] & 1) ? 4 - ((r->data[0] >> 2) & 3) : 4;
-      if (segmented) *segmented = false;
-      return std::vector<std::uint8_t>(r->data.begin() + 4, r->data.begin() + 4 + static_cast<std::ptrdiff_t>(n));
-    }
-    if (segmented) *segmented = true;
-    std::vector<std::uint8_t> out;
-    for (bool toggle = false;; toggle = !toggle) {
-      auto s = request({static_cast<std::uint8_t>(0x60 | (toggle ? 0x10 : 0))});
-      if (!s || s->data[0] == 0x80) return std::nullopt;
-      const std::size_t n = 7 - ((s->data[0] >> 1) & 7);
-      out.insert(out.end(), s->data.begin() + 1, s->data.begin() + 1 + static_cast<std::ptrdiff_t>(n));
-      if (s->data[0] & 1) return out;
-    }
-  }
-  std::uint64_t read_u(std::uint16_t index, std::uint8_t sub) {
-    auto v = upload(index, sub);
-    EXPECT_TRUE(v) << std::hex << index << ":" << int(sub);
-    std::uint64_t u = 0;
-    for (std::size_t i = 0; v && i < v->size() && i < 8; ++i) u |= static_cast<std::uint64_t>((*v)[i]) << (8 * i);
-    return u;
-  }
-  /// Expedited download; 0 or the abort code (0xFFFFFFFF: no answer).
-  std::uint32_t write(std::uint16_t index, std::uint8_t sub, std::uint32_t value, std::uint8_t size) {
-    auto r = request({static_cast<std::uint8_t>(0x23 | ((4 - size) << 2)), static_cast<std::uint8_t>(index),
-                      static_cast<std::uint8_t>(index >> 8), sub, static_cast<std::uint8_t>(value),
-                      static_cast<std::uint8_t>(value >> 8), static_cast<std::uint8_t>(value >> 16),
-                      static_cast<std::uint8_t>(value >> 24)});
-    if (!r) return 0xFFFFFFFFu;
-    return r->data[0] == 0x60 ? 0 : code(*r);
-  }
-  static std::uint32_t code(const Frame& f) {
-    return static_cast<std::uint32_t>(f.data[4] | f.data[5] << 8 | f.data[6] << 16 | f.data[7] << 24);
-  }
-
- private:
-  CanSocket& can_;
-  std::uint8_t node_;
-};
-
-// A vplant child process with its stderr in a file.
-class Vplant {
- public:
-  explicit Vplant(const std::vector<std::string>& args) {
-    char path[] = "/tmp/vplant-valve-stderr-XXXXXX";
-    const int fd = ::mkstemp(path);
-    stderr_path_ = path;
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::dup2(fd, 2);
-      std::vector<char*> argv;
-      argv.push_back(const_cast<char*>(kVplant));
-      for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-      argv.push_back(nullptr);
-      ::execv(kVplant, argv.data());
-      std::perror("execv");
-      ::_exit(127);
-    }
-    ::close(fd);
-  }
-  ~Vplant() {
-    if (pid_ > 0 && !exited_) {
-      ::kill(pid_, SIGKILL);
-      ::waitpid(pid_, nullptr, 0);
-    }
-    std::remove(stderr_path_.c_str());
-  }
-  /// Exit status within `timeout`, or -1.
-  int wait_exit(milliseconds timeout = milliseconds(10000)) {
-    const auto deadline = Clock::now() + timeout;
-    while (Clock::now() < deadline) {
-      int status = 0;
-      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-        exited_ = true;
-        return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-      }
-      std::this_thread::sleep_for(milliseconds(10));
-    }
-    return -1;
-  }
-  void kill9() {
-    ::kill(pid_, SIGKILL);
-    ::waitpid(pid_, nullptr, 0);
-    exited_ = true;
-  }
-  std::string stderr_text() const {
-    std::ifstream in(stderr_path_);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-
- private:
-  pid_t pid_ = -1;
-  bool exited_ = false;
-  std::string stderr_path_;
-};
-
-using Bytes = std::vector<std::uint8_t>;
 
 bool frame_is(const Frame& f, std::uint32_t id, const Bytes& data) { return f.id == id && f.data == data; }
 

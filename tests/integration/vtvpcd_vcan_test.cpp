@@ -8,6 +8,8 @@
 // example, the manual's PDO start sequence with the example mapping, a life-guarding EMCY, and
 // the RAM-only resets.
 #include <gtest/gtest.h>
+
+#include "tests/support/vcan_master.h"
 #include <linux/can.h>
 #include <linux/can/raw.h>
 #include <net/if.h>
@@ -31,133 +33,18 @@
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-using std::chrono::milliseconds;
-using Bytes = std::vector<std::uint8_t>;
+using namespace vtest::vcan;
 
-const char* const kVplant = VPLANT_BINARY;
+// `vplant ...` as a child process, stderr kept for failure messages.
+class Vplant : public ChildProcess {
+ public:
+  explicit Vplant(const std::vector<std::string>& args) : ChildProcess(VPLANT_BINARY, args) {}
+};
+
 constexpr std::uint8_t kNode = 5;
 
-struct Frame {
-  std::uint32_t id = 0;
-  Bytes data;
-  bool rtr = false;
-  Clock::time_point at{};
-};
-
-class CanSocket {
- public:
-  explicit CanSocket(const char* iface) {
-    fd_ = ::socket(PF_CAN, SOCK_RAW, CAN_RAW);
-    if (fd_ < 0) return;
-    ifreq ifr{};
-    std::snprintf(ifr.ifr_name, sizeof(ifr.ifr_name), "%s", iface);
-    sockaddr_can addr{};
-    addr.can_family = AF_CAN;
-    if (::ioctl(fd_, SIOCGIFINDEX, &ifr) < 0) {
-      ::close(fd_);
-      fd_ = -1;
-      return;
-    }
-    addr.can_ifindex = ifr.ifr_ifindex;
-    if (::bind(fd_, reinterpret_cast<sockaddr*>(&addr), sizeof(addr)) < 0) {
-      ::close(fd_);
-      fd_ = -1;
-    }
-  }
-  ~CanSocket() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  CanSocket(const CanSocket&) = delete;
-  CanSocket& operator=(const CanSocket&) = delete;
-  bool ok() const { return fd_ >= 0; }
-
-  void send(std::uint32_t id, Bytes data) {
-    can_frame f{};
-    f.can_id = id;
-    f.can_dlc = static_cast<std::uint8_t>(data.size());
-    std::copy(data.begin(), data.end(), f.data);
-    ASSERT_EQ(::write(fd_, &f, sizeof(f)), static_cast<ssize_t>(sizeof(f)));
-  }
-  void send_rtr(std::uint32_t id, std::uint8_t dlc) {
-    can_frame f{};
-    f.can_id = id | CAN_RTR_FLAG;
-    f.can_dlc = dlc;
-    ASSERT_EQ(::write(fd_, &f, sizeof(f)), static_cast<ssize_t>(sizeof(f)));
-  }
-
-  /// The next frame for which `match` holds, within `timeout` (others are dropped).
-  std::optional<Frame> wait_for(const std::function<bool(const Frame&)>& match, milliseconds timeout = milliseconds(3000)) {
-    const auto deadline = Clock::now() + timeout;
-    for (;;) {
-      const auto left = std::chrono::duration_cast<milliseconds>(deadline - Clock::now()).count();
-      if (left <= 0) return std::nullopt;
-      pollfd pfd{fd_, POLLIN, 0};
-      if (::poll(&pfd, 1, static_cast<int>(left)) <= 0) continue;
-      can_frame f{};
-      if (::read(fd_, &f, sizeof(f)) != static_cast<ssize_t>(sizeof(f))) continue;
-      Frame got{f.can_id & CAN_SFF_MASK, Bytes(f.data, f.data + f.can_dlc), (f.can_id & CAN_RTR_FLAG) != 0, Clock::now()};
-      if (match(got)) return got;
-    }
-  }
-  std::optional<Frame> wait_for_id(std::uint32_t id, milliseconds timeout = milliseconds(3000)) {
-    return wait_for([id](const Frame& f) { return f.id == id && !f.rtr; }, timeout);
-  }
-  void drain() {
-    while (wait_for([](const Frame&) { return true; }, milliseconds(0))) {
-    }
-  }
-
- private:
-  int fd_ = -1;
-};
-
 /// One SDO request on 0x605, its reply from 0x585 (8 data bytes; empty when none came).
-Bytes sdo(CanSocket& can, Bytes request) {
-  request.resize(8, 0);
-  can.send(0x600 + kNode, request);
-  auto r = can.wait_for_id(0x580 + kNode);
-  return r ? r->data : Bytes{};
-}
-
-// A vplant child process with its stderr in a file.
-class Vplant {
- public:
-  explicit Vplant(const std::vector<std::string>& args) {
-    char path[] = "/tmp/vplant-vtvpcd-stderr-XXXXXX";
-    const int fd = ::mkstemp(path);
-    stderr_path_ = path;
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::dup2(fd, 2);
-      std::vector<char*> argv;
-      argv.push_back(const_cast<char*>(kVplant));
-      for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-      argv.push_back(nullptr);
-      ::execv(kVplant, argv.data());
-      std::perror("execv");
-      ::_exit(127);
-    }
-    ::close(fd);
-  }
-  ~Vplant() {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGTERM);
-      ::waitpid(pid_, nullptr, 0);
-    }
-    std::remove(stderr_path_.c_str());
-  }
-  std::string stderr_text() const {
-    std::ifstream in(stderr_path_);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-
- private:
-  pid_t pid_ = -1;
-  std::string stderr_path_;
-};
+Bytes sdo(CanSocket& can, Bytes request) { return SdoClient(can, kNode).exchange(std::move(request)); }
 
 bool is_boot_up(const Frame& f) { return f.id == 0x700u + kNode && !f.rtr && f.data == Bytes{0x00}; }
 
