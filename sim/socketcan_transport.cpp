@@ -65,6 +65,10 @@ std::unique_ptr<SocketCanTransport> SocketCanTransport::open(const std::string& 
   return std::unique_ptr<SocketCanTransport>(new SocketCanTransport(iface, fd, static_cast<int>(ifindex)));
 }
 
+std::unique_ptr<SocketCanTransport> SocketCanTransport::adopt(std::string name, int fd) {
+  return std::unique_ptr<SocketCanTransport>(new SocketCanTransport(std::move(name), fd, -1));
+}
+
 SocketCanTransport::SocketCanTransport(std::string iface, int fd, int ifindex)
     : iface_(std::move(iface)), fd_(fd), ifindex_(ifindex) {}
 
@@ -153,6 +157,7 @@ bool SocketCanTransport::rebind() {
 }
 
 void SocketCanTransport::check_link() {
+  if (ifindex_ < 0) return;  // adopted socket: no interface to watch
   ifreq ifr{};
   std::strncpy(ifr.ifr_name, iface_.c_str(), IFNAMSIZ - 1);
   const bool exists = ::ioctl(fd_, SIOCGIFFLAGS, &ifr) == 0;

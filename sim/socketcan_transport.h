@@ -15,6 +15,9 @@ class SocketCanTransport final : public Transport {
   /// Opens a raw CAN socket bound to `iface`. On failure returns nullptr and sets `error` to a
   /// message that names the interface (e.g. "CAN interface 'can7' does not exist").
   static std::unique_ptr<SocketCanTransport> open(const std::string& iface, std::string& error);
+  /// Adopts an already open, non-blocking datagram socket that carries `struct can_frame`
+  /// records (a bound CAN socket, or a socketpair in tests). Takes ownership of `fd`.
+  static std::unique_ptr<SocketCanTransport> adopt(std::string name, int fd);
   ~SocketCanTransport() override;
 
   std::string_view name() const override { return iface_; }

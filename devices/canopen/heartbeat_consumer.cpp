@@ -17,6 +17,19 @@ void HeartbeatConsumer::bind_objects() {
   if (!obj) return;
   for (auto& [sub, e] : obj->entries) {
     if (sub == 0) continue;
+    node_.od().add_check(kConsumerHeartbeat, sub, [this, s = sub](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+      const SdoAbort refuse = node_.policy().error_control.duplicate_consumer;
+      if (origin != Origin::Sdo || refuse == SdoAbort::None) return SdoAbort::None;
+      const auto v = static_cast<std::uint32_t>(decode_unsigned(data));
+      const auto producer = (v >> 16) & 0xFF;
+      if (producer == 0 || producer > 127 || (v & 0xFFFF) == 0) return SdoAbort::None;  // entry unused
+      for (const auto& [other, entry] : node_.od().object(kConsumerHeartbeat)->entries) {
+        if (other == 0 || other == s) continue;
+        const auto w = entry.as<std::uint32_t>();
+        if (((w >> 16) & 0xFF) == producer && (w & 0xFFFF) != 0) return refuse;
+      }
+      return SdoAbort::None;
+    });
     node_.od().add_observer(kConsumerHeartbeat, sub, [this](OdEntry&, Origin) {
       reload();
       node_.rebuild_dispatch();

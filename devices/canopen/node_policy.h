@@ -28,6 +28,10 @@ struct SdoPolicy {
   bool segmented_download = true;
   /// A segmented transfer whose total differs from the object size (numeric types).
   SdoAbort segmented_size_mismatch = SdoAbort::TypeMismatch;
+  /// A download to a data type definition (DEFTYPE/DEFSTRUCT object, e.g. the dummy types
+  /// 0x0002-0x0007 an EDS declares in [DummyUsage]): CiA 301 §7.4.7 entries that describe a type
+  /// and hold no parameter, so the access itself is unsupported (reading gives the length).
+  SdoAbort type_definition_write = SdoAbort::UnsupportedAccess;
 };
 
 struct NmtPolicy {
@@ -45,6 +49,9 @@ struct ErrorControlPolicy {
   std::uint16_t life_guard_emcy = 0x8130;
   std::uint16_t heartbeat_consumer_emcy = 0x8130;
   std::uint8_t communication_error_register = 0x11;
+  /// CiA 301 §7.5.2.21 (0x1016): configuring a second non-zero consumer heartbeat time for a
+  /// node-ID that another sub-index already watches is refused with this code (None = allowed).
+  SdoAbort duplicate_consumer = SdoAbort::ParameterIncompatible;
 };
 
 struct EmcyPolicy {

@@ -25,6 +25,11 @@ using Bytes = std::vector<std::uint8_t>;
 enum class Access : std::uint8_t { ReadOnly, WriteOnly, ReadWrite, Const };
 enum class ObjectCode : std::uint8_t { Null = 0, Domain = 2, DefType = 5, DefStruct = 6, Var = 7, Array = 8, Record = 9 };
 
+/// EDS AccessType "rwr" / "rww" (CiA 306): a read-write entry that is a process input (mainly
+/// mapped to TPDOs) or a process output (mainly mapped to RPDOs). Documentation only: the access
+/// rights are those of ReadWrite; kept so an EDS round-trips.
+enum class ProcessData : std::uint8_t { None, Input, Output };
+
 /// Who is accessing an entry; checks and hooks may behave differently (e.g. an RPDO value out of
 /// range is clamped, an SDO value is refused).
 enum class Origin : std::uint8_t { Sdo, Pdo, Internal, Restore };
@@ -62,6 +67,8 @@ class OdEntry {
   std::size_t max_length = 0;  ///< variable-length types: capacity (0 = unlimited)
   /// Force segmented SDO upload even when short (some devices always segment strings).
   bool force_segmented = false;
+  /// With access ReadWrite: EDS "rwr" (Input) or "rww" (Output).
+  ProcessData process_data = ProcessData::None;
 
   std::vector<WriteCheck> state_checks;
   std::vector<WriteCheck> value_checks;
@@ -89,6 +96,9 @@ struct OdObject {
   std::uint16_t index = 0;
   std::string name;
   ObjectCode code = ObjectCode::Var;
+  /// CiA 306 ObjFlags: hints for configuration tools (bit 0 refuse write on download, bit 1
+  /// refuse read on scan). The device itself ignores them.
+  std::uint32_t obj_flags = 0;
   std::map<std::uint8_t, OdEntry> entries;  // node-based: entry addresses stay valid
 };
 

@@ -119,6 +119,9 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
   if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
+  if (const auto code = node_.od().object(index)->code; code == ObjectCode::DefType || code == ObjectCode::DefStruct) {
+    return abort(index, sub, node_.policy().sdo.type_definition_write);
+  }
   if (!e->writable()) return abort(index, sub, node_.od().access_aborts().write_read_only);
 
   const bool expedited = req[0] & 0x02;

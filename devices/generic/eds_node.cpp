@@ -1,16 +1,22 @@
 #include "devices/generic/eds_node.h"
 
 #include "devices/canopen/eds.h"
+#include "devices/canopen/lss_slave.h"
+#include "sim/log.h"
 
 namespace devices {
 
 std::unique_ptr<EdsNode> EdsNode::load(const std::string& eds_path, const DeviceOptions& options, std::string& error) {
   canopen::EdsError eds_error;
-  auto od = canopen::load_eds(eds_path, eds_error);
+  canopen::EdsFileInfo info;
+  std::vector<canopen::EdsError> warnings;
+  auto od = canopen::load_eds(eds_path, eds_error, &info, &warnings);
   if (!od) {
     error = eds_error.message();
     return nullptr;
   }
+  // A non-conformant but usable file still runs; the operator sees what is wrong with it.
+  for (const auto& w : warnings) sim::log(sim::LogLevel::Warn, "{}", w.message());
   if (!options.variant.empty()) {
     error = "an EDS node has no variants";
     return nullptr;
@@ -21,8 +27,13 @@ std::unique_ptr<EdsNode> EdsNode::load(const std::string& eds_path, const Device
   }
   canopen::NodePolicy policy;
   policy.store.path = options.store_path;
+  // The error history is as deep as the file's 0x1003 (sub 0 must never count more entries
+  // than the object has).
+  const auto* history = od->object(0x1003);
+  policy.emcy.history_depth = history && !history->entries.empty() ? history->entries.rbegin()->first : 0;
   const std::uint8_t id = options.node_id == 0 ? 1 : options.node_id;
   auto node = std::make_unique<canopen::Node>("eds", std::move(*od), std::move(policy), id);
+  if (info.lss_supported) node->enable_lss(canopen::LssPolicy{});  // identity from 0x1018
   auto device = std::unique_ptr<EdsNode>(new EdsNode(std::move(node)));
   device->install_operator_checks();
   return device;

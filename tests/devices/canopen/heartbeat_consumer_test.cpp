@@ -24,3 +24,37 @@ TEST(HeartbeatConsumer, StartsAtFirstHeartbeatAndTimesOut) {
   h.send(0x720, {0x05});
   EXPECT_EQ(h.take(), Frames{Frame(0x085, {0, 0, 0, 0, 0, 0, 0, 0})});
 }
+
+namespace {
+canopen::ObjectDictionary od_with_two_consumers() {
+  canopen::ObjectDictionary od;
+  canopen::CommunicationProfile p;
+  p.heartbeat_consumers = 2;
+  canopen::add_communication_objects(od, p);
+  return od;
+}
+}  // namespace
+
+// CiA 301 §7.5.2.21: two non-zero consumer heartbeat times for the same node-ID → 0x06040043.
+TEST(HeartbeatConsumer, SecondEntryForTheSameNodeIsAParameterIncompatibility) {
+  vtest::CanopenHarness h(od_with_two_consumers(), {}, 5);
+  h.power_on();
+  ASSERT_EQ(h.write(0x1016, 1, (0x20u << 16) | 150u, 4), 0u);
+  h.take();
+  h.send(0x605, {0x23, 0x16, 0x10, 0x02, 0xC8, 0x00, 0x20, 0x00});  // node 0x20 again, 200 ms
+  EXPECT_EQ(h.take(), Frames{Frame(0x585, {0x80, 0x16, 0x10, 0x02, 0x43, 0x00, 0x04, 0x06})});
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x1016, 2), 0u);
+  // Another node, a zero time, or rewriting the same sub-index are all fine.
+  EXPECT_EQ(h.write(0x1016, 2, (0x21u << 16) | 200u, 4), 0u);
+  EXPECT_EQ(h.write(0x1016, 2, (0x20u << 16) | 0u, 4), 0u);
+  EXPECT_EQ(h.write(0x1016, 1, (0x20u << 16) | 300u, 4), 0u);
+}
+
+TEST(HeartbeatConsumer, DuplicateCheckCanBeSwitchedOff) {
+  canopen::NodePolicy p;
+  p.error_control.duplicate_consumer = canopen::SdoAbort::None;
+  vtest::CanopenHarness h(od_with_two_consumers(), p, 5);
+  h.power_on();
+  ASSERT_EQ(h.write(0x1016, 1, (0x20u << 16) | 150u, 4), 0u);
+  EXPECT_EQ(h.write(0x1016, 2, (0x20u << 16) | 200u, 4), 0u);
+}

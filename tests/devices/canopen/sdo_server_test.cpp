@@ -164,3 +164,36 @@ TEST_F(LenientSdoServerTest, ExtendsAndTruncates) {
   // Short request padded with zeros.
   EXPECT_EQ(req({0x40, 0x00, 0x20, 0x00}).size(), 1u);
 }
+
+namespace {
+// The generic node plus a data type entry: UNSIGNED8 (0x0005) declared as a dummy type.
+canopen::ObjectDictionary od_with_type_definition() {
+  auto od = vtest::make_generic_od();
+  od.add_object(0x0005, "UNSIGNED8", canopen::ObjectCode::DefType);
+  od.add_entry(0x0005, 0, "UNSIGNED8", canopen::DataType::Unsigned32, canopen::Access::Const, 8u);
+  return od;
+}
+}  // namespace
+
+TEST(SdoTypeDefinition, ReadGivesTheLengthAndAWriteIsAnUnsupportedAccess) {
+  vtest::CanopenHarness h(od_with_type_definition(), {}, 5);
+  h.power_on();
+  h.take();
+  h.send(0x605, {0x40, 0x05, 0x00, 0x00, 0, 0, 0, 0});
+  EXPECT_EQ(h.take(), Frames{resp({0x43, 0x05, 0x00, 0x00, 0x08, 0x00, 0x00, 0x00})});
+  h.send(0x605, {0x2F, 0x05, 0x00, 0x00, 0x10, 0, 0, 0});
+  EXPECT_EQ(h.take(), Frames{resp({0x80, 0x05, 0x00, 0x00, 0x00, 0x00, 0x01, 0x06})});  // 0x06010000
+  // A segmented download is refused the same way, at its initiate.
+  h.send(0x605, {0x21, 0x05, 0x00, 0x00, 0x04, 0, 0, 0});
+  EXPECT_EQ(h.take(), Frames{resp({0x80, 0x05, 0x00, 0x00, 0x00, 0x00, 0x01, 0x06})});
+}
+
+TEST(SdoTypeDefinition, TheAbortCodeIsAKnob) {
+  canopen::NodePolicy p;
+  p.sdo.type_definition_write = canopen::SdoAbort::ReadOnly;
+  vtest::CanopenHarness h(od_with_type_definition(), p, 5);
+  h.power_on();
+  h.take();
+  h.send(0x605, {0x2F, 0x05, 0x00, 0x00, 0x10, 0, 0, 0});
+  EXPECT_EQ(h.take(), Frames{resp({0x80, 0x05, 0x00, 0x00, 0x02, 0x00, 0x01, 0x06})});  // 0x06010002
+}
