@@ -17,8 +17,9 @@ class Recorder final : public sim::Steppable {
   explicit Recorder(sim::Duration period) : period_(period) {}
   ~Recorder() override;
 
-  /// Adds a signal (once per name); `keep` = hold its samples in memory (for a plot).
-  int add(const Signal& signal, bool keep);
+  /// Adds a signal (once per name); `keep` = hold its samples in memory (for a plot), `csv` =
+  /// write it to the CSV file. Returns its column.
+  int add(const Signal& signal, bool keep, bool csv);
   /// Streams every signal to `path` as CSV; returns an error message, empty on success.
   std::string open_csv(const std::string& path);
 
@@ -35,6 +36,7 @@ class Recorder final : public sim::Steppable {
   sim::Time next_{};
   std::vector<Signal> signals_;
   std::vector<bool> keep_;
+  std::vector<bool> in_csv_;
   std::vector<std::vector<double>> kept_;
   std::vector<double> times_;
   std::FILE* csv_ = nullptr;

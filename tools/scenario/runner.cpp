@@ -97,11 +97,11 @@ Runner::Runner(const Scenario& scenario, const Environment& env, const RunOption
   if (!m.csv_path.empty()) {
     const auto signals = scenario.outputs.csv && !scenario.outputs.csv->signals.empty() ? scenario.outputs.csv->signals
                                                                                         : m.world->wired_signals();
-    for (const auto& s : signals) m.recorder->add(m.world->resolve(s), false);
+    for (const auto& s : signals) m.recorder->add(m.world->resolve(s), false, true);
   }
   for (const auto& p : scenario.outputs.plots) {
     std::vector<int> columns;
-    for (const auto& s : p.signals) columns.push_back(m.recorder->add(m.world->resolve(s), true));
+    for (const auto& s : p.signals) columns.push_back(m.recorder->add(m.world->resolve(s), true, false));
     m.plots.emplace_back(&p, std::move(columns));
   }
 

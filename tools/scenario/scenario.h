@@ -233,7 +233,8 @@ struct Scenario {
   std::string description;
   std::vector<BusSpec> buses;
   std::vector<NodeSpec> nodes;
-  YAML::Node plant;  ///< the `plant:` section as written (undefined when absent)
+  bool has_plant = false;
+  YAML::Node plant;  ///< the `plant:` section as written
   SourceMark plant_mark;
   std::vector<WireSpec> wires;
   ClockSpec clock;

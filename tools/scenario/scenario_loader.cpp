@@ -115,10 +115,11 @@ std::vector<WireSpec> read_wires(const YAML::Node& seq, const std::string& file)
     MapReader r(item, file, "wire");
     WireSpec w;
     w.mark = r.mark();
-    w.from_mark = r.key_mark("from");
-    w.to_mark = r.key_mark("to");
-    w.from = read_string(r.require("from"), file, "from");
-    w.to = read_string(r.require("to"), file, "to");
+    const auto from = r.require("from"), to = r.require("to");
+    w.from_mark = mark_of(from, file);
+    w.to_mark = mark_of(to, file);
+    w.from = read_string(from, file, "from");
+    w.to = read_string(to, file, "to");
     if (auto s = r.get("scale")) w.scale = read_number(s, file, "scale");
     if (auto o = r.get("offset")) w.offset = read_number(o, file, "offset");
     if (auto n = r.get("noise")) w.noise = read_number(n, file, "noise", 0.0, 1e12);
@@ -237,6 +238,7 @@ Scenario parse_scenario(const std::string& text, const std::string& file, const 
   if (auto n = r.get("nodes")) s.nodes = read_nodes(n, file, dir, s.buses);
   if (auto p = r.get("plant")) {
     s.plant = p;
+    s.has_plant = true;
     s.plant_mark = mark_of(p, file);
   }
   if (auto w = r.get("wires")) s.wires = read_wires(w, file);

@@ -4,9 +4,9 @@
 // expectations observe exactly what crossed the wire.
 //
 // Each tick (it runs after the fault injector and before the devices): decide due assertions on
-// the signals at `now`, check the SDO timeout, produce due SYNCs, then execute steps until one
-// blocks (a wait, an SDO transfer, a step whose `at` is in the future). Steps that complete
-// immediately run back to back in the same tick.
+// the signals at `now`, check the SDO timeout, execute steps until one blocks (a wait, an SDO
+// transfer, a step whose `at` is in the future; steps that complete immediately run back to back
+// in the same tick), then produce the due SYNCs.
 #pragma once
 
 #include <functional>

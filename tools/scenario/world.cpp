@@ -133,7 +133,7 @@ void World::build_nodes(const Environment& env) {
 }
 
 void World::build_plant(const Environment& env) {
-  if (!scenario_.plant.IsDefined()) return;
+  if (!scenario_.has_plant) return;
   if (!env.make_plant) throw LoadError(scenario_.plant_mark, "this build of vplant has no plant physics (plant/)");
   plant_ = env.make_plant(scenario_.plant, scenario_.file);
   for (const auto& p : plant_->ports()) {
