@@ -1,0 +1,354 @@
+#include "plant/circuit_solver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "plant/component.h"
+#include "plant/equations.h"
+#include "plant/fluid.h"
+#include "plant/rigid_body_world.h"
+
+namespace plant {
+namespace {
+
+constexpr double kGamma = 1.0 + 1.0 / std::numbers::sqrt2;
+// A body slower than this (m/s or rad/s) counts as at rest: ODE's stiction motor leaves
+// residual speeds many orders of magnitude below it.
+constexpr double kRestSpeed = 1e-6;
+// A slider within this distance (m) of a stop counts as resting on it.
+constexpr double kStopTolerance = 1e-9;
+// A node within this pressure (Pa) of the cavitation pressure counts as cavitating when drained.
+constexpr double kCavitationTolerance = 1.0;
+// Step-size control: local error tolerances and how often a step may be halved.
+constexpr double kPressureTolerance = 0.5e5;  // Pa
+constexpr double kSpeedTolerance = 1e-3;      // m/s or rad/s
+constexpr double kRelativeTolerance = 0.01;
+constexpr int kMaxHalvings = 6;
+
+}  // namespace
+
+CircuitSolver::CircuitSolver(std::vector<Component*> components, const Fluid& fluid, RigidBodyWorld& world, int nodes,
+                             int pressure_states)
+    : components_(std::move(components)),
+      fluid_(fluid),
+      world_(world),
+      np_(pressure_states),
+      nv_(world.size()),
+      n_(pressure_states + world.size()),
+      lu_(pressure_states + world.size()) {
+  const auto nodes_u = static_cast<std::size_t>(nodes), nv = static_cast<std::size_t>(nv_);
+  state_.pressure.assign(nodes_u, 0.0);
+  state_.velocity.assign(nv, 0.0);
+  state_.position.assign(nv, 0.0);
+  for (int b = 0; b < nv_; ++b) state_.position[static_cast<std::size_t>(b)] = world_.position(DofId{b});
+  state_.pressure_states = np_;
+  state_.fluid = &fluid_;
+  stage_ = state_;
+  start_pressure_ = state_.pressure;
+  volume_.assign(nodes_u, 0.0);
+  vapour_.assign(static_cast<std::size_t>(np_), 0.0);
+  cavitating_.assign(static_cast<std::size_t>(np_), 0);
+  mass_.assign(nv, 0.0);
+  dry_static_.assign(nv, 0.0);
+  dry_kinetic_.assign(nv, 0.0);
+  friction_.assign(nv, 0.0);
+  friction_limit_.assign(nv, 0.0);
+  ode_force_.assign(nv, 0.0);
+  held_.assign(nv, 0);
+  for (Eigen::VectorXd* v : {&r_, &r0_, &f_, &k1_, &k2_, &y_, &scale_}) v->setZero(n_);
+  for (Eigen::MatrixXd* m : {&g_, &j_, &w_}) m->setZero(n_, n_);
+  refresh();
+}
+
+void CircuitSolver::refresh() {
+  std::fill(mass_.begin(), mass_.end(), 0.0);
+  for (const Component* c : components_) c->add_inertia(mass_);
+  for (int b = 0; b < nv_; ++b) world_.set_mass(DofId{b}, mass_[static_cast<std::size_t>(b)]);
+  for (const Component* c : components_) c->fix_pressures(state_);
+  std::fill(volume_.begin(), volume_.end(), 0.0);
+  for (const Component* c : components_) c->add_volumes(state_, volume_);
+}
+
+void CircuitSolver::evaluate(const CircuitState& s, Equations::Mode m) {
+  r_.setZero();
+  if (m == Equations::Mode::Jacobian) {
+    g_.setZero();
+    std::fill(dry_static_.begin(), dry_static_.end(), 0.0);
+    std::fill(dry_kinetic_.begin(), dry_kinetic_.end(), 0.0);
+  }
+  Equations eq(s, m, r_, g_, dry_static_, dry_kinetic_, power_);
+  for (const Component* c : components_) c->stamp(eq);
+}
+
+void CircuitSolver::account_power(const CircuitState& s, std::array<double, kEnergyKinds>& power) {
+  power.fill(0.0);
+  Equations eq(s, Equations::Mode::Power, r_, g_, dry_static_, dry_kinetic_, power);
+  for (const Component* c : components_) c->stamp(eq);
+}
+
+double CircuitSolver::kinetic_energy() const {
+  double e = 0.0;
+  for (int b = 0; b < nv_; ++b) {
+    const auto i = static_cast<std::size_t>(b);
+    e += 0.5 * mass_[i] * state_.velocity[i] * state_.velocity[i];
+  }
+  return e;
+}
+
+double CircuitSolver::vapour_volume() const {
+  double v = 0.0;
+  for (double x : vapour_) v += x;
+  return v;
+}
+
+void CircuitSolver::set_energy_accounting(bool on) {
+  if (on && !accounting_) {
+    ledger_ = EnergyLedger{};
+    ledger_.kinetic = ledger_.kinetic_start = kinetic_energy();
+  }
+  accounting_ = on;
+}
+
+void CircuitSolver::classify_bodies() {
+  for (int b = 0; b < nv_; ++b) {
+    const auto bu = static_cast<std::size_t>(b);
+    const int row = np_ + b;
+    const double v = state_.velocity[bu];
+    const double force = r_[row];
+    held_[bu] = 0;
+    if (std::abs(v) <= kRestSpeed) {
+      // At rest: it moves only if the force beats static friction in a direction it may go.
+      const double fs = dry_static_[bu];
+      bool may_rise = true, may_fall = true;
+      if (world_.is_slider(DofId{b})) {
+        may_fall = state_.position[bu] > world_.lower(DofId{b}) + kStopTolerance;
+        may_rise = state_.position[bu] < world_.upper(DofId{b}) - kStopTolerance;
+      }
+      if (force > fs && may_rise) {
+        friction_[bu] = -fs;
+      } else if (force < -fs && may_fall) {
+        friction_[bu] = fs;
+      } else {
+        held_[bu] = 1;
+        friction_[bu] = 0.0;
+      }
+      friction_limit_[bu] = fs;
+    } else {
+      friction_[bu] = v > 0.0 ? -dry_kinetic_[bu] : dry_kinetic_[bu];
+      friction_limit_[bu] = dry_kinetic_[bu];
+    }
+  }
+}
+
+void CircuitSolver::classify_nodes() {
+  const double p_cav = fluid_.cavitation_pressure();
+  for (int i = 0; i < np_; ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    // Cavitating: vapour is present, or the node sits at the vapour pressure and is being drained.
+    cavitating_[iu] = vapour_[iu] > 0.0 || (state_.pressure[iu] <= p_cav + kCavitationTolerance && r_[i] < 0.0);
+  }
+}
+
+void CircuitSolver::step(double h) { advance(h, 0); }
+
+// One ROS2 step of length h, or - when its error estimate says the step straddled a sharp change
+// the Jacobian did not see (a relief valve opening, a port closing) - two half steps, down to
+// h / 2^kMaxHalvings. Nothing is changed before the step is accepted.
+void CircuitSolver::advance(double h, int depth) {
+  for (const Component* c : components_) c->fix_pressures(state_);
+  // Chamber volumes at the step's midpoint position (predicted), so the position-dependent
+  // capacitance does not cost the method its second order.
+  for (int b = 0; b < nv_; ++b) {
+    const auto bu = static_cast<std::size_t>(b);
+    stage_.position[bu] = state_.position[bu] + 0.5 * h * state_.velocity[bu];
+  }
+  std::fill(volume_.begin(), volume_.end(), 0.0);
+  for (const Component* c : components_) c->add_volumes(stage_, volume_);
+  if (accounting_) account_power(state_, power_start_);
+  start_pressure_ = state_.pressure;
+  const double vapour_before = accounting_ ? vapour_volume() : 0.0;
+
+  // --- f(y) and J at the start of the step; which constraints are active ---
+  evaluate(state_, Equations::Mode::Jacobian);
+  r0_ = r_;
+  classify_bodies();
+  classify_nodes();
+  for (int i = 0; i < np_; ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    double slope = 0.0;
+    const double beta = fluid_.bulk_modulus(state_.pressure[iu], &slope);
+    scale_[i] = beta / volume_[iu];
+    f_[i] = cavitating_[iu] ? 0.0 : scale_[i] * r_[i];
+    j_.row(i) = scale_[i] * g_.row(i);
+    // The stiffening of air-laden oil as pressure rises (slope * inflow > 0) is a growing mode;
+    // only its damping half belongs in W, or W loses its diagonal dominance at low pressure.
+    j_(i, i) += std::min(slope * r_[i], 0.0) / volume_[iu];
+  }
+  for (int b = 0; b < nv_; ++b) {
+    const auto bu = static_cast<std::size_t>(b);
+    const int row = np_ + b;
+    scale_[row] = 1.0 / mass_[bu];
+    f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
+    j_.row(row) = scale_[row] * g_.row(row);
+  }
+
+  // --- ROS2 stages; held bodies and cavitating nodes keep their value (row of W = identity) ---
+  w_.noalias() = (-kGamma * h) * j_;
+  w_.diagonal().array() += 1.0;
+  auto pin = [&](int row) {
+    w_.row(row).setZero();
+    w_(row, row) = 1.0;
+  };
+  for (int i = 0; i < np_; ++i)
+    if (cavitating_[static_cast<std::size_t>(i)]) pin(i);
+  for (int b = 0; b < nv_; ++b)
+    if (held_[static_cast<std::size_t>(b)]) pin(np_ + b);
+  lu_.compute(w_);
+  k1_.noalias() = lu_.solve(f_);
+
+  stage_.pressure = state_.pressure;
+  stage_.position = state_.position;
+  for (int i = 0; i < np_; ++i) stage_.pressure[static_cast<std::size_t>(i)] += h * k1_[i];
+  for (int b = 0; b < nv_; ++b)
+    stage_.velocity[static_cast<std::size_t>(b)] = state_.velocity[static_cast<std::size_t>(b)] + h * k1_[np_ + b];
+  evaluate(stage_, Equations::Mode::Residual);
+  for (int i = 0; i < np_; ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    if (cavitating_[iu]) {
+      f_[i] = 0.0;
+    } else {
+      f_[i] = fluid_.bulk_modulus(stage_.pressure[iu]) / volume_[iu] * r_[i];
+    }
+  }
+  for (int b = 0; b < nv_; ++b) {
+    const auto bu = static_cast<std::size_t>(b);
+    const int row = np_ + b;
+    f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
+  }
+  f_ -= 2.0 * k1_;
+  k2_.noalias() = lu_.solve(f_);
+  y_ = (1.5 * h) * k1_ + (0.5 * h) * k2_;  // increment over the step
+
+  if (depth < kMaxHalvings && error_norm(h) > 1.0) {
+    advance(0.5 * h, depth + 1);
+    advance(0.5 * h, depth + 1);
+    return;
+  }
+
+  ++steps_taken_;
+
+  // --- Rigid bodies in ODE ---
+  if (nv_ > 0) {
+    for (int b = 0; b < nv_; ++b) {
+      const auto bu = static_cast<std::size_t>(b);
+      const int row = np_ + b;
+      if (held_[bu]) {
+        // The force at the end of the step (linearised); ODE decides whether it breaks away.
+        ode_force_[bu] = r0_[row] + g_.row(row).dot(y_);
+      } else {
+        // The force that gives exactly the predicted velocity change once ODE's motor has
+        // applied the dry friction.
+        ode_force_[bu] = mass_[bu] * y_[row] / h - friction_[bu];
+      }
+    }
+    world_.step(h, ode_force_, friction_limit_);
+  }
+
+  // --- Commit; where ODE's motion differs from the prediction (a stop was hit, the body stuck),
+  // the nodes get the volume that was not displaced ---
+  for (int i = 0; i < np_; ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    state_.pressure[iu] += y_[i];
+    // A cavitating node's vapour absorbs its net outflow (mean of the start and stage flows).
+    if (cavitating_[iu]) vapour_[iu] -= 0.5 * h * (r0_[i] + r_[i]);
+  }
+  for (int b = 0; b < nv_; ++b) {
+    const auto bu = static_cast<std::size_t>(b);
+    const int row = np_ + b;
+    const double predicted = state_.velocity[bu] + y_[row];
+    const double actual = world_.velocity(DofId{b});
+    const double dv = actual - predicted;
+    if (dv != 0.0) {
+      for (int i = 0; i < np_; ++i) {
+        const auto iu = static_cast<std::size_t>(i);
+        const double dp = h * j_(i, row) * dv;
+        if (cavitating_[iu]) {
+          vapour_[iu] -= dp / scale_[i];
+        } else {
+          state_.pressure[iu] += dp;
+        }
+      }
+    }
+    state_.velocity[bu] = actual;
+    state_.position[bu] = world_.position(DofId{b});
+  }
+  if (accounting_) {
+    for (int i = 0; i < np_; ++i) {
+      const auto iu = static_cast<std::size_t>(i);
+      ledger_.fluid_stored += compression_energy(volume_[iu], start_pressure_[iu], state_.pressure[iu]);
+    }
+  }
+  settle_vapour();
+
+  if (accounting_) {
+    account_power(state_, power_end_);
+    for (std::size_t k = 0; k < power_end_.size(); ++k)
+      ledger_.by_kind[k] += 0.5 * h * (power_start_[k] + power_end_[k]);
+    // Vapour grows at the cavitation pressure p_cav: the fluid does work p_cav * dV on it.
+    ledger_.by_kind[static_cast<std::size_t>(EnergyKind::Cavitation)] -=
+        fluid_.cavitation_pressure() * (vapour_volume() - vapour_before);
+    for (int b = 0; b < nv_; ++b) {
+      ledger_.dry_friction += world_.friction_loss(DofId{b});
+      ledger_.end_stops += world_.impact_loss(DofId{b});
+    }
+    ledger_.kinetic = kinetic_energy();
+  }
+}
+
+// After a step: vapour that the inflow has refilled collapses (the surplus compresses the liquid),
+// and a node that the step took below the cavitation pressure is brought back to it, the
+// shortfall becoming vapour. Both keep the fluid volume balance exact.
+void CircuitSolver::settle_vapour() {
+  const double p_cav = fluid_.cavitation_pressure();
+  const double beta_cav = fluid_.bulk_modulus(p_cav);
+  for (int i = 0; i < np_; ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    double& p = state_.pressure[iu];
+    const double before = p;
+    if (cavitating_[iu]) {
+      p = p_cav;
+      if (vapour_[iu] < 0.0) {
+        p = p_cav - vapour_[iu] * beta_cav / volume_[iu];
+        vapour_[iu] = 0.0;
+      }
+    } else if (p < p_cav) {
+      vapour_[iu] = (p_cav - p) * volume_[iu] / beta_cav;
+      p = p_cav;
+    }
+    if (accounting_ && p != before) ledger_.fluid_stored += compression_energy(volume_[iu], before, p);
+  }
+}
+
+// The embedded first-order solution of ROS2 is y + h k1; the difference to the second-order one,
+// h/2 (k1 + k2), estimates the error. Weighted per state: pressures to 0.5 bar + 1 %, speeds to
+// 1 mm/s (or mrad/s) + 1 %; pinned states (held bodies, cavitating nodes) do not count.
+double CircuitSolver::error_norm(double h) const {
+  double worst = 0.0;
+  for (int i = 0; i < n_; ++i) {
+    const bool pressure = i < np_;
+    const auto iu = static_cast<std::size_t>(pressure ? i : i - np_);
+    if (pressure ? cavitating_[iu] != 0 : held_[iu] != 0) continue;
+    const double value = pressure ? state_.pressure[iu] : state_.velocity[iu];
+    const double scale = (pressure ? kPressureTolerance : kSpeedTolerance) + kRelativeTolerance * std::abs(value);
+    worst = std::max(worst, std::abs(0.5 * h * (k1_[i] + k2_[i])) / scale);
+  }
+  return worst;
+}
+
+double CircuitSolver::compression_energy(double volume, double p0, double p1) const {
+  // integral of p V / beta(p) dp, trapezoidal
+  return 0.5 * volume * (p0 / fluid_.bulk_modulus(p0) + p1 / fluid_.bulk_modulus(p1)) * (p1 - p0);
+}
+
+}  // namespace plant

@@ -1,0 +1,98 @@
+// Integrates the circuit over one physics step: node pressures and body velocities implicitly
+// (they are stiff: a cylinder chamber's pressure settles in microseconds), body positions in ODE.
+//
+// Method: ROS2, the two-stage L-stable Rosenbrock method of Verwer, Spee, Blom and Hundsdorfer
+// (SIAM J. Sci. Comput. 20, 1999), with gamma = 1 + 1/sqrt(2):
+//     W = I - gamma h J,   W k1 = f(y),   W k2 = f(y + h k1) - 2 k1,   y' = y + h (3/2 k1 + 1/2 k2)
+// Second order, L-stable (stiff modes are damped, not rung), one LU of W per step, and second order
+// even with an inexact Jacobian (it is a W-method), which keeps it robust at the kinks of the
+// models. y = [node pressures; body velocities], f = [beta(p)/V * net inflow; net force / mass].
+//
+// Coupling to ODE: the solver predicts the step's end velocities, hands ODE the force that
+// produces exactly that change (plus the dry friction, which ODE applies itself as a
+// force-limited joint motor), and lets ODE integrate positions, hold stiction and enforce end
+// stops. Where ODE's velocity differs (a stop was hit, the body stuck) the pressures are corrected
+// for the volume that was not displaced. Bodies at rest whose force cannot overcome static
+// friction or an end stop are held at zero velocity in the solve, so both sides agree.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <cstdint>
+#include <vector>
+
+#include "plant/circuit_state.h"
+#include "plant/energy_ledger.h"
+#include "plant/equations.h"
+
+namespace plant {
+
+class Component;
+class Fluid;
+class RigidBodyWorld;
+
+class CircuitSolver {
+ public:
+  /// nodes: all pressure nodes, of which the first `pressure_states` are integrated.
+  CircuitSolver(std::vector<Component*> components, const Fluid& fluid, RigidBodyWorld& world, int nodes,
+                int pressure_states);
+
+  CircuitState& state() { return state_; }
+  const CircuitState& state() const { return state_; }
+
+  /// Recomputes body masses and boundary pressures (after construction or a parameter change).
+  void refresh();
+  /// Advances pressures, velocities and positions by h (components have advanced already).
+  void step(double h);
+
+  /// Physics steps taken, counting the halves of steps the error control split.
+  std::uint64_t steps_taken() const { return steps_taken_; }
+
+  void set_energy_accounting(bool on);
+  const EnergyLedger& energy() const { return ledger_; }
+
+ private:
+  void evaluate(const CircuitState& s, Equations::Mode mode);
+  void account_power(const CircuitState& s, std::array<double, kEnergyKinds>& power);
+  void advance(double h, int depth);
+  double error_norm(double h) const;
+  void classify_bodies();
+  void classify_nodes();
+  void settle_vapour();
+  double kinetic_energy() const;
+  double vapour_volume() const;
+  /// Energy to compress `volume` of fluid from p0 to p1: integral of p V/beta(p) dp (trapezoid).
+  double compression_energy(double volume, double p0, double p1) const;
+
+  std::vector<Component*> components_;
+  const Fluid& fluid_;
+  RigidBodyWorld& world_;
+  int np_;  // pressure states
+  int nv_;  // bodies
+  int n_;   // np_ + nv_
+
+  CircuitState state_;
+  CircuitState stage_;
+  std::vector<double> volume_;          // per node, m^3
+  std::vector<double> vapour_;          // per pressure state: vapour volume of a cavitating node, m^3
+  std::vector<char> cavitating_;        // per pressure state, this step
+  std::vector<double> start_pressure_;  // pressures at the start of the step
+  std::vector<double> mass_;    // per body
+  std::vector<double> dry_static_, dry_kinetic_;
+  std::vector<double> friction_;        // dry friction force used in the solve, per body
+  std::vector<double> friction_limit_;  // force limit handed to ODE, per body
+  std::vector<double> ode_force_;
+  std::vector<char> held_;
+  std::array<double, kEnergyKinds> power_{};  // scratch for Residual/Jacobian modes
+  std::array<double, kEnergyKinds> power_start_{}, power_end_{};
+
+  Eigen::VectorXd r_, r0_, f_, k1_, k2_, y_, scale_;
+  Eigen::MatrixXd g_, j_, w_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+
+  std::uint64_t steps_taken_ = 0;
+  bool accounting_ = false;
+  EnergyLedger ledger_;
+};
+
+}  // namespace plant

@@ -1,0 +1,49 @@
+#include "plant/pressure_sensor.h"
+
+#include <array>
+#include <cmath>
+
+namespace plant {
+namespace {
+
+const std::array<ParameterSpec, PressureSensor::kParamCount> kParams{{
+    {"time_constant", "s", 0.0, 0.0, 10.0, false, "first-order response time (0 = ideal)"},
+}};
+const std::array<ConnectorSpec, 1> kConnectors{{
+    {"port", Domain::Fluid, false, "the node measured"},
+}};
+const std::array<SignalSpec, PressureSensor::kSignalCount> kSignals{{
+    {"pressure", sim::PortDirection::Output, "Pa", "measured gauge pressure"},
+}};
+
+const ComponentType kType{
+    "pressure_sensor",
+    "pressure transducer",
+    kParams,
+    kConnectors,
+    kSignals,
+    nullptr,
+    [](std::string name, std::vector<double> values) -> std::unique_ptr<Component> {
+      return std::make_unique<PressureSensor>(std::move(name), std::move(values));
+    },
+};
+
+}  // namespace
+
+const ComponentType& PressureSensor::type_info() { return kType; }
+
+PressureSensor::PressureSensor(std::string name, std::vector<double> values)
+    : Component(kType, std::move(name), std::move(values)) {}
+
+void PressureSensor::publish(const CircuitState& state, double dt) {
+  const double p = state.p(node(kPort));
+  const double tau = parameter(kTimeConstant);
+  if (!started_ || tau <= 0.0) {
+    out(kPressure) = p;
+    started_ = true;
+    return;
+  }
+  out(kPressure) += (1.0 - std::exp(-dt / tau)) * (p - out(kPressure));
+}
+
+}  // namespace plant

@@ -1,0 +1,190 @@
+#include "plant/rigid_body_world.h"
+
+#include <ode/ode.h>
+
+#include <cmath>
+#include <numbers>
+
+namespace plant {
+namespace {
+
+// ODE keeps library-wide state (its allocator hooks, collision tables): initialise it once per
+// process and never close it, since several plants may live at once.
+void ensure_ode_initialised() {
+  static const bool initialised = [] {
+    dInitODE2(0);
+    return true;
+  }();
+  (void)initialised;
+}
+
+// Where a slider is put back when ODE lets it pass an end stop within a step: a hair inside the
+// stop, so ODE's limit is active (position <= stop) at the next step and holds the body there.
+constexpr double kStopInset = 1e-12;
+
+}  // namespace
+
+struct RigidBodyWorld::Dof {
+  dBodyID body = nullptr;
+  dJointID joint = nullptr;
+  dJointFeedback feedback{};
+  bool slider = true;
+  double lower = 0.0;
+  double upper = 0.0;
+  double mass = 1.0;
+  double position = 0.0;   // slider: clamped to the stops; hinge: unwrapped angle
+  double raw_angle = 0.0;  // hinge: ODE's wrapped angle at the last step
+  double velocity = 0.0;
+  double friction_loss = 0.0;
+  double impact_loss = 0.0;
+};
+
+RigidBodyWorld::RigidBodyWorld() {
+  ensure_ode_initialised();
+  world_ = dWorldCreate();
+  dWorldSetGravity(world_, 0, 0, 0);  // loads are explicit forces; orientation is the scenario's business
+}
+
+RigidBodyWorld::~RigidBodyWorld() { dWorldDestroy(world_); }
+
+RigidBodyWorld::Dof& RigidBodyWorld::at(DofId dof) const { return *dofs_[static_cast<std::size_t>(dof.index)]; }
+
+DofId RigidBodyWorld::add_slider(double lower, double upper, double initial_position) {
+  auto d = std::make_unique<Dof>();
+  d->slider = true;
+  d->body = dBodyCreate(world_);
+  d->joint = dJointCreateSlider(world_, nullptr);
+  dJointAttach(d->joint, d->body, nullptr);
+  dJointSetSliderAxis(d->joint, 1, 0, 0);  // zero position = where the body is now (origin)
+  dJointSetSliderParam(d->joint, dParamVel, 0);
+  dJointSetSliderParam(d->joint, dParamFMax, 0);
+  dJointSetSliderParam(d->joint, dParamCFM, 0);     // a held body stays exactly at rest
+  dJointSetSliderParam(d->joint, dParamBounce, 0);  // inelastic stops
+  dJointSetSliderParam(d->joint, dParamStopERP, 0);  // penetration is projected out in step()
+  dJointSetFeedback(d->joint, &d->feedback);
+  dBodySetPosition(d->body, initial_position, 0, 0);
+  d->position = initial_position;
+  dofs_.push_back(std::move(d));
+  const DofId id{size() - 1};
+  set_limits(id, lower, upper);
+  set_mass(id, 1.0);
+  return id;
+}
+
+DofId RigidBodyWorld::add_hinge(double initial_angle) {
+  auto d = std::make_unique<Dof>();
+  d->slider = false;
+  d->body = dBodyCreate(world_);
+  d->joint = dJointCreateHinge(world_, nullptr);
+  dJointAttach(d->joint, d->body, nullptr);
+  dJointSetHingeAnchor(d->joint, 0, 0, 0);
+  dJointSetHingeAxis(d->joint, 0, 0, 1);  // zero angle = the body's orientation now
+  dJointSetHingeParam(d->joint, dParamVel, 0);
+  dJointSetHingeParam(d->joint, dParamFMax, 0);
+  dJointSetHingeParam(d->joint, dParamCFM, 0);
+  dJointSetFeedback(d->joint, &d->feedback);
+  // Rotate exactly about the hinge axis each step (no small-angle quaternion update error).
+  dBodySetFiniteRotationMode(d->body, 1);
+  dBodySetFiniteRotationAxis(d->body, 0, 0, 1);
+  dQuaternion q;
+  dQFromAxisAndAngle(q, 0, 0, 1, initial_angle);
+  dBodySetQuaternion(d->body, q);
+  d->position = initial_angle;
+  d->raw_angle = dJointGetHingeAngle(d->joint);
+  dofs_.push_back(std::move(d));
+  const DofId id{size() - 1};
+  set_mass(id, 1.0);
+  return id;
+}
+
+void RigidBodyWorld::set_mass(DofId dof, double mass) {
+  Dof& d = at(dof);
+  d.mass = mass;
+  dMass m;
+  dMassSetZero(&m);
+  if (d.slider) {
+    // Rotation is locked by the joint; any positive inertia will do.
+    const double i = 0.01 * mass;
+    dMassSetParameters(&m, mass, 0, 0, 0, i, i, i, 0, 0, 0);
+  } else {
+    // Translation is locked by the joint; the inertia about the axis is what counts.
+    dMassSetParameters(&m, 1.0, 0, 0, 0, mass, mass, mass, 0, 0, 0);
+  }
+  dBodySetMass(d.body, &m);
+}
+
+void RigidBodyWorld::set_limits(DofId dof, double lower, double upper) {
+  Dof& d = at(dof);
+  d.lower = lower;
+  d.upper = upper;
+  // ODE wants lo <= hi at every moment: widen first, then narrow.
+  dJointSetSliderParam(d.joint, dParamLoStop, -dInfinity);
+  dJointSetSliderParam(d.joint, dParamHiStop, upper);
+  dJointSetSliderParam(d.joint, dParamLoStop, lower);
+}
+
+bool RigidBodyWorld::is_slider(DofId dof) const { return at(dof).slider; }
+double RigidBodyWorld::lower(DofId dof) const { return at(dof).lower; }
+double RigidBodyWorld::upper(DofId dof) const { return at(dof).upper; }
+double RigidBodyWorld::position(DofId dof) const { return at(dof).position; }
+double RigidBodyWorld::velocity(DofId dof) const { return at(dof).velocity; }
+double RigidBodyWorld::friction_loss(DofId dof) const { return at(dof).friction_loss; }
+double RigidBodyWorld::impact_loss(DofId dof) const { return at(dof).impact_loss; }
+
+void RigidBodyWorld::step(double h, const std::vector<double>& force, const std::vector<double>& friction_limit) {
+  for (std::size_t i = 0; i < dofs_.size(); ++i) {
+    Dof& d = *dofs_[i];
+    if (d.slider) {
+      dJointSetSliderParam(d.joint, dParamFMax, friction_limit[i]);
+      dBodyAddForce(d.body, force[i], 0, 0);
+    } else {
+      dJointSetHingeParam(d.joint, dParamFMax, friction_limit[i]);
+      dBodyAddTorque(d.body, 0, 0, force[i]);
+    }
+  }
+  dWorldStep(world_, h);
+  for (auto& dp : dofs_) {
+    Dof& d = *dp;
+    d.impact_loss = 0.0;
+    const double v0 = d.velocity;
+    if (d.slider) {
+      d.velocity = dJointGetSliderPositionRate(d.joint);
+      // ODE advances positions with the end-of-step velocity (x += h v1, first order); move the
+      // body back by h/2 (v1 - v0) so the position follows the trapezoidal rule, x += h (v0+v1)/2,
+      // matching the second-order velocities of the circuit solver.
+      const dReal* p = dBodyGetPosition(d.body);
+      dBodySetPosition(d.body, p[0] - 0.5 * h * (d.velocity - v0), p[1], p[2]);
+      double x = dJointGetSliderPosition(d.joint);
+      // Joint force on the body along the axis (motor + stop) times the step's displacement.
+      d.friction_loss = -d.feedback.f1[0] * d.velocity * h;
+      // ODE engages a stop only from the step after the body reached it: project the overshoot
+      // out and end the motion into the stop (an inelastic impact).
+      const bool below = x < d.lower, above = x > d.upper;
+      if (below || above) {
+        const double stop = below ? d.lower - kStopInset : d.upper + kStopInset;
+        p = dBodyGetPosition(d.body);
+        dBodySetPosition(d.body, p[0] + (stop - x), p[1], p[2]);
+        if ((below && d.velocity < 0.0) || (above && d.velocity > 0.0)) {
+          d.impact_loss = 0.5 * d.mass * d.velocity * d.velocity;
+          d.velocity = 0.0;
+          dBodySetLinearVel(d.body, 0, 0, 0);
+        }
+        x = stop;
+      }
+      d.position = std::fmin(std::fmax(x, d.lower), d.upper);
+    } else {
+      d.velocity = dJointGetHingeAngleRate(d.joint);
+      // Trapezoidal angle, as for sliders: turn back by h/2 (w1 - w0) about the axis.
+      dQuaternion back, q;
+      dQFromAxisAndAngle(back, 0, 0, 1, -0.5 * h * (d.velocity - v0));
+      dQMultiply0(q, back, dBodyGetQuaternion(d.body));
+      dBodySetQuaternion(d.body, q);
+      const double raw = dJointGetHingeAngle(d.joint);
+      d.position += std::remainder(raw - d.raw_angle, 2.0 * std::numbers::pi);
+      d.raw_angle = raw;
+      d.friction_loss = -d.feedback.t1[2] * d.velocity * h;
+    }
+  }
+}
+
+}  // namespace plant

@@ -1,0 +1,137 @@
+// The plant description in YAML: the shipped reference file equals the built-in reference plant,
+// and each kind of error is reported at its file:line:col.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include "plant/plant_yaml.h"
+#include "plant/reference_plant.h"
+#include "plant_test_support.h"
+
+namespace plant {
+namespace {
+
+using namespace plant::testing;
+
+const std::string kReferenceFile = std::string(VPLANT_SOURCE_DIR) + "/scenarios/plant/reference-plant.plant.yaml";
+
+TEST(PlantYaml, ReferenceFileBuildsTheSamePlantAsTheBuiltInDescription) {
+  const PlantDescription from_file = load_plant_file(kReferenceFile);
+  const PlantDescription built_in = reference_plant_description();
+  EXPECT_TRUE(equivalent(from_file, built_in));
+  // Same plant, not just the same data: identical outputs, bit for bit, under the same inputs.
+  Plant a(from_file), b(built_in);
+  ASSERT_EQ(a.ports().size(), b.ports().size());
+  long mismatches = 0;
+  run(a, 2.0, [&](double t) {
+    // Both plants have taken the same number of steps here.
+    for (std::size_t i = 0; i < a.ports().size(); ++i)
+      mismatches += std::memcmp(a.ports()[i].value, b.ports()[i].value, sizeof(double)) != 0;
+    for (Plant* p : {&a, &b}) {
+      port(*p, "pump.pilot_command") = 4.0 * (0.5 - port(*p, "pump.swivel_angle"));
+      port(*p, "valve_cyl.solenoid_a_current") = t > 0.2 ? 0.5 : 0.0;
+      port(*p, "valve_motor.solenoid_b_current") = t > 0.5 ? 0.8 : 0.0;
+    }
+    b.step(sim::Time{}, sim::milliseconds(1));  // run() steps a right after this
+  });
+  EXPECT_EQ(mismatches, 0);
+}
+
+TEST(PlantYaml, EmittedYamlParsesBackToTheSameDescription) {
+  const PlantDescription d = reference_plant_description();
+  const PlantDescription back = parse_plant_description(YAML::Load(to_yaml(d))["plant"], "emitted");
+  EXPECT_TRUE(equivalent(d, back));
+}
+
+// Parses `text` (a whole file with a `plant:` section) and returns the error message.
+std::string error_of(const std::string& text) {
+  const std::string path = ::testing::TempDir() + "/bad.plant.yaml";
+  std::ofstream(path) << text;
+  try {
+    load_plant_file(path);
+  } catch (const DescriptionError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind(path + ":", 0), 0u) << message;
+    return message.substr(path.size() + 1);  // "line:col: reason"
+  }
+  ADD_FAILURE() << "accepted:\n" << text;
+  return {};
+}
+
+const char* kMinimal = R"(plant:
+  components:
+    - type: fluid
+      name: oil
+    - type: tank
+      name: tank
+    - type: volume
+      name: line
+      parameters:
+        volume: 0.001
+    - type: relief_valve
+      name: relief
+  connections:
+    - name: supply
+      ports: [line.port, relief.P]
+    - name: return
+      ports: [tank.port, relief.T]
+)";
+
+TEST(PlantYaml, MinimalFileIsAccepted) {
+  const std::string path = ::testing::TempDir() + "/good.plant.yaml";
+  std::ofstream(path) << kMinimal;
+  const PlantDescription d = load_plant_file(path);
+  EXPECT_EQ(d.components.size(), 4u);
+  EXPECT_NO_THROW(Plant{d});
+}
+
+std::string with(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(PlantYaml, UnknownComponentTypeIsReportedAtTheType) {
+  EXPECT_EQ(error_of(with(kMinimal, "type: relief_valve", "type: relief_vlave")),
+            "11:13: unknown component type 'relief_vlave'");
+}
+
+TEST(PlantYaml, UnknownParameterIsReportedAtItsName) {
+  EXPECT_EQ(error_of(with(kMinimal, "volume: 0.001", "volme: 0.001")),
+            "10:9: unknown parameter 'volme' for component type 'volume'");
+}
+
+TEST(PlantYaml, OutOfRangeValueIsReportedAtTheValue) {
+  EXPECT_EQ(error_of(with(kMinimal, "volume: 0.001", "volume: -0.001")),
+            "10:17: parameter 'volume' = -0.001 out of range: must be > 0 m^3");
+  EXPECT_EQ(error_of(with(kMinimal, "volume: 0.001", "volume: 1 litre")),
+            "10:17: parameter 'volume' must be a number in SI units, got '1 litre'");
+}
+
+TEST(PlantYaml, DuplicateComponentNameIsReportedAtTheSecondName) {
+  EXPECT_EQ(error_of(with(kMinimal, "name: relief", "name: line")), "12:13: duplicate component name 'line'");
+}
+
+TEST(PlantYaml, ConnectionToAMissingComponentIsReportedAtThePort) {
+  EXPECT_EQ(error_of(with(kMinimal, "[line.port, relief.P]", "[line.port, valve.P]")),
+            "15:26: connection 'supply': no component named 'valve'");
+}
+
+TEST(PlantYaml, ConnectionToAMissingPortIsReportedAtThePort) {
+  EXPECT_EQ(error_of(with(kMinimal, "[line.port, relief.P]", "[line.port, relief.A]")),
+            "15:26: connection 'supply': component 'relief' (relief_valve) has no port 'A'");
+}
+
+TEST(PlantYaml, OtherStructuralErrorsArePlacedToo) {
+  EXPECT_EQ(error_of(with(kMinimal, "      name: oil", "      name: oil\n      colour: amber")),
+            "5:7: unknown key 'colour' in a component");
+  EXPECT_EQ(error_of(with(kMinimal, "[tank.port, relief.T]", "[tank.port]")), "11:7: port 'relief.T' is not connected");
+  EXPECT_EQ(error_of(with(kMinimal, "[tank.port, relief.T]", "[tank.port, relief.T, relief.P]")),
+            "17:36: port 'relief.P' is connected twice");
+  EXPECT_EQ(error_of("plant:\n  components: [\n"), "3:1: end of sequence flow not found");
+}
+
+}  // namespace
+}  // namespace plant
