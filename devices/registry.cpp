@@ -1,12 +1,16 @@
 #include "devices/registry.h"
 
 // Each product adds one include and one entry below.
+#include "devices/dsv/dsv_product.h"
+#include "devices/md2/md2_product.h"
 
 namespace devices {
 
 const std::vector<Product>& products() {
   static const std::vector<Product> kProducts = [] {
     std::vector<Product> list;
+    list.push_back(md2::product());
+    list.push_back(dsv::product());
     return list;
   }();
   return kProducts;

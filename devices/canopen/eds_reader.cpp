@@ -175,7 +175,7 @@ class Reader {
   void cross_check();
   void build_object(std::uint16_t index, const ObjectSections& secs);
   void build_compact_array(std::uint16_t index, const ObjectSections& secs, const std::string& name);
-  void build_record(std::uint16_t index, const ObjectSections& secs, ObjectCode code);
+  void build_record(std::uint16_t index, const ObjectSections& secs);
   /// Reads the value keys of `s` into entry (index, sub). Returns false on error.
   bool build_entry(std::uint16_t index, std::uint8_t sub, const std::string& name, const IniSection& s, bool domain_object);
   void apply_names(std::uint16_t index, const IniSection& s, unsigned count);
@@ -726,11 +726,10 @@ void Reader::build_object(std::uint16_t index, const ObjectSections& secs) {
   }
   if (!secs.subs.count(0)) diag_.error(s.line, "missing [" + hex4(index) + "sub0] (highest sub-index supported)");
   od_.add_object(index, name, code).obj_flags = flags;
-  build_record(index, secs, code);
+  build_record(index, secs);
 }
 
-void Reader::build_record(std::uint16_t index, const ObjectSections& secs, ObjectCode code) {
-  (void)code;
+void Reader::build_record(std::uint16_t index, const ObjectSections& secs) {
   for (const auto& [sub, sec] : secs.subs) {
     std::string name;
     if (const auto* k = sec->take("PARAMETERNAME")) {

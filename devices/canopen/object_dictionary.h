@@ -191,12 +191,20 @@ class ObjectDictionary {
 
   AccessAborts& access_aborts() { return access_aborts_; }
 
+  /// Objects the device hides at the moment (e.g. CiA 408 products whose object set follows the
+  /// control mode): the SDO server answers 0x06020000 for a hidden index before any other check.
+  /// PDOs, store/restore, EDS and device code still see every object.
+  using Visibility = std::function<bool(std::uint16_t index)>;
+  void set_visibility(Visibility visibility) { visibility_ = std::move(visibility); }
+  bool visible(std::uint16_t index) const { return !visibility_ || visibility_(index); }
+
  private:
   OdEntry& must_entry(std::uint16_t index, std::uint8_t sub);
   const OdEntry& must_entry(std::uint16_t index, std::uint8_t sub) const;
 
   std::map<std::uint16_t, OdObject> objects_;
   AccessAborts access_aborts_;
+  Visibility visibility_;
 };
 
 // ---- template implementations ---------------------------------------------------------------

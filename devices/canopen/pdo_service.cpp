@@ -145,7 +145,7 @@ void PdoService::load(Pdo& p, PdoDirection dir) {
   p.type = type ? type->as<std::uint8_t>() : 255;
   const auto* count = od.entry(p.map_index, 0);
   const std::uint8_t n = count ? count->as<std::uint8_t>() : 0;
-  p.valid = !(v & kInvalid);
+  p.valid = !(v & kInvalid) && !p.device_disabled;
   if (resolve_mapping(od, p.map_index, n, dir, rules(), p.mapping) != SdoAbort::None) {
     p.mapping = PdoMapping{};  // an invalid stored mapping makes the PDO send/accept nothing
   }
@@ -293,6 +293,36 @@ void PdoService::try_send_event(Tpdo& t, sim::Time now) {
   std::array<std::uint8_t, 8> data{};
   sample(t, data);
   transmit(t, data, now);
+}
+
+void PdoService::set_active(PdoDirection dir, int number, bool active) {
+  if (dir == PdoDirection::Receive) {
+    for (auto& r : rpdos_) {
+      if (r.number != number) continue;
+      r.device_disabled = !active;
+      load(r, dir);
+      r.latched = false;
+    }
+  } else {
+    for (auto& t : tpdos_) {
+      if (t.number != number) continue;
+      t.device_disabled = !active;
+      load(t, dir);
+      t.event_pending = false;
+    }
+  }
+  node_.rebuild_dispatch();
+}
+
+bool PdoService::active(PdoDirection dir, int number) const {
+  if (dir == PdoDirection::Receive) {
+    for (const auto& r : rpdos_)
+      if (r.number == number) return !r.device_disabled;
+  } else {
+    for (const auto& t : tpdos_)
+      if (t.number == number) return !t.device_disabled;
+  }
+  return false;
 }
 
 void PdoService::request_tpdo(int number) {

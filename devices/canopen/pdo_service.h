@@ -44,6 +44,11 @@ class PdoService {
   /// Application event for TPDO n (types 0 and 254/255): sends now (or at the next SYNC for
   /// type 0), subject to the inhibit time.
   void request_tpdo(int number);
+  /// The device switches PDO n off (or on again) whatever its COB-ID says: CiA 408 products whose
+  /// fixed mapping depends on the control mode listen to one RPDO and send one TPDO only, while
+  /// the others still read back as valid. Default: active.
+  void set_active(PdoDirection dir, int number, bool active);
+  bool active(PdoDirection dir, int number) const;
   void process(sim::Time now);
 
   /// Current mapped length of TPDO/RPDO n (for tests and tools).
@@ -55,7 +60,8 @@ class PdoService {
     int number = 0;
     std::uint16_t comm_index = 0;
     std::uint16_t map_index = 0;
-    bool valid = false;
+    bool valid = false;            ///< COB-ID valid and not switched off by the device
+    bool device_disabled = false;  ///< set_active(false)
     bool extended = false;
     bool rtr_allowed = true;
     std::uint32_t cob_id = 0;

@@ -118,6 +118,7 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
   const std::uint16_t index = index_of(req);
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
+  if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
   if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
   if (const auto code = node_.od().object(index)->code; code == ObjectCode::DefType || code == ObjectCode::DefStruct) {
     return abort(index, sub, node_.policy().sdo.type_definition_write);
@@ -187,6 +188,7 @@ void SdoServer::initiate_upload(const std::uint8_t* req) {
   const std::uint16_t index = index_of(req);
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
+  if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
   if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
   if (auto a = node_.od().read(*e, Origin::Sdo); a != SdoAbort::None) return abort(index, sub, a);
   const std::size_t size = e->value.size();

@@ -152,3 +152,29 @@ TEST_F(PdoTest, DisabledPdoIsNotSentOrReceived) {
   EXPECT_TRUE(h.take().empty());
   EXPECT_EQ(h.node().od().get<std::uint32_t>(0x6001), 0u);
 }
+
+TEST_F(PdoTest, PdoSwitchedOffByTheDeviceIsSilentButReadsValid) {
+  auto& pdo = h.node().pdo();
+  pdo.set_active(canopen::PdoDirection::Receive, 1, false);
+  pdo.set_active(canopen::PdoDirection::Transmit, 2, false);
+  EXPECT_FALSE(pdo.active(canopen::PdoDirection::Receive, 1));
+  operational();
+  h.take();
+  // RPDO1 is ignored, its COB-ID still reads valid.
+  h.send(0x205, {0x78, 0x56, 0x34, 0x12, 0xAA, 0xBB});
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x6001), 0u);
+  EXPECT_EQ(h.read_u(0x1400, 1), 0x205u);
+  // TPDO2 (every SYNC) neither goes out on SYNC nor answers a remote request.
+  ASSERT_EQ(h.read_u(0x1801, 2), 1u);
+  h.send(0x080, {});
+  h.send(Frame::remote(0x285, 4));
+  EXPECT_TRUE(h.take().empty());
+  // Switched on again, both work.
+  pdo.set_active(canopen::PdoDirection::Receive, 1, true);
+  pdo.set_active(canopen::PdoDirection::Transmit, 2, true);
+  h.send(0x205, {0x78, 0x56, 0x34, 0x12, 0xAA, 0xBB});
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x6001), 0x12345678u);
+  h.take();
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x78, 0x56, 0x34, 0x12})});
+}

@@ -165,6 +165,21 @@ TEST_F(LenientSdoServerTest, ExtendsAndTruncates) {
   EXPECT_EQ(req({0x40, 0x00, 0x20, 0x00}).size(), 1u);
 }
 
+TEST_F(SdoServerTest, HiddenObjectsAnswer06020000BeforeAnyOtherCheck) {
+  // A device hides 0x2003 (read-only) and 0x6000 for the moment (its object set follows a mode).
+  h.node().od().set_visibility([](std::uint16_t index) { return index != 0x2003 && index != 0x6000; });
+  EXPECT_EQ(req({0x40, 0x03, 0x20, 0x00, 0, 0, 0, 0}), Frames{resp({0x80, 0x03, 0x20, 0x00, 0x00, 0x00, 0x02, 0x06})});
+  // Write to a read-only hidden object: existence wins over access (0x06010002).
+  EXPECT_EQ(req({0x23, 0x03, 0x20, 0x00, 1, 2, 3, 4}), Frames{resp({0x80, 0x03, 0x20, 0x00, 0x00, 0x00, 0x02, 0x06})});
+  // Wrong size to a hidden object: existence wins over length (0x06070012).
+  EXPECT_EQ(req({0x23, 0x00, 0x60, 0x00, 1, 2, 3, 4}), Frames{resp({0x80, 0x00, 0x60, 0x00, 0x00, 0x00, 0x02, 0x06})});
+  // Device code still sees the object; visible objects are unaffected.
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 0x1234);
+  EXPECT_EQ(req({0x40, 0x00, 0x20, 0x00, 0, 0, 0, 0}), Frames{resp({0x4F, 0x00, 0x20, 0x00, 0x07, 0, 0, 0})});
+  h.node().od().set_visibility({});
+  EXPECT_EQ(req({0x40, 0x03, 0x20, 0x00, 0, 0, 0, 0}), Frames{resp({0x43, 0x03, 0x20, 0x00, 0xEF, 0xBE, 0xAD, 0xDE})});
+}
+
 namespace {
 // The generic node plus a data type entry: UNSIGNED8 (0x0005) declared as a dummy type.
 canopen::ObjectDictionary od_with_type_definition() {

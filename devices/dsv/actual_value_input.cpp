@@ -1,0 +1,78 @@
+#include "devices/dsv/actual_value_input.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "devices/dsv/control_mode.h"
+
+namespace dsv {
+
+namespace {
+constexpr double kAdcCounts = 1024;  // 10-bit acquisition (§5.4.1)
+}
+
+void ActualValueInput::sample(double measurand, bool wire_broken) {
+  const double p = std::clamp((measurand - o_.sensor_min) / (o_.sensor_max - o_.sensor_min), 0.0, 1.0);
+  switch (p_.value(0x2200)) {
+    case 0: signal_ = 10.0 * p; break;                   // V
+    case 2: signal_ = wire_broken ? 0 : 20.0 * p; break;  // mA
+    default: signal_ = wire_broken ? 0 : 4.0 + 16.0 * p; break;
+  }
+  if (wire_broken && p_.value(0x2200) == 0) signal_ = 0;
+}
+
+bool ActualValueInput::cable_break() const {
+  return p_.value(0x2201) == 1 && p_.value(0x2200) == 3 && signal_ < o_.cable_break_ma;
+}
+
+double ActualValueInput::adc_full_scale() const { return p_.value(0x2200) == 0 ? 10000.0 : 20000.0; }
+
+double ActualValueInput::interface_counts_16384(std::int64_t raw) const {
+  const double s = static_cast<double>(raw) / 1000.0;  // V or mA
+  switch (p_.value(0x2200)) {
+    case 0: return s / 10.0 * 16384;
+    case 2: return s / 20.0 * 16384;
+    default: return 3277 + (s - 4.0) * 13107.0 / 16.0;
+  }
+}
+
+double ActualValueInput::value(std::int8_t m) const {
+  if (m == mode::kVprcClosed) {
+    double counts;
+    switch (p_.value(0x2200)) {
+      case 0: counts = signal_ / 10.0 * 16384; break;
+      case 2: counts = signal_ / 20.0 * 16384; break;
+      default: counts = std::floor(3277 + (signal_ - 4.0) * 13107.0 / 16.0 + 0.5); break;
+    }
+    return std::clamp(std::round(counts), 0.0, 16384.0);
+  }
+  const auto s = DsvParameters::scaling_objects(m);
+  const double min_ref = static_cast<double>(p_.value(s.min_reference));
+  const double max_ref = static_cast<double>(p_.value(s.max_reference));
+  const double fs = adc_full_scale();
+  const double c_min = static_cast<double>(p_.value(s.min_interface)) * kAdcCounts / fs;
+  const double c_max = static_cast<double>(p_.value(s.max_interface)) * kAdcCounts / fs;
+  if (c_max <= c_min) return min_ref;  // no interface range configured yet
+  const double signal_raw = signal_ * 1000.0;  // mV or µA
+  const double count = std::floor(signal_raw * kAdcCounts / fs + 1e-9);  // exact at the steps
+  return std::round(min_ref + (count - c_min) * (max_ref - min_ref) / (c_max - c_min));
+}
+
+std::uint32_t ActualValueInput::internal_resolution(std::int8_t m) const {
+  const auto s = DsvParameters::scaling_objects(m);
+  const double reference = static_cast<double>(p_.value(s.max_reference) - p_.value(s.min_reference));
+  const double interface = static_cast<double>(p_.value(s.max_interface) - p_.value(s.min_interface)) * kAdcCounts /
+                           adc_full_scale();
+  if (interface <= 0 || reference <= 0) return 1;
+  return std::max<std::uint32_t>(1, static_cast<std::uint32_t>(reference / interface));
+}
+
+double ActualValueInput::counts_per_unit() const {
+  const auto s = DsvParameters::scaling_objects(mode::kVprcClosed);
+  const double reference = static_cast<double>(p_.value(s.max_reference) - p_.value(s.min_reference));
+  const double counts = interface_counts_16384(p_.value(s.max_interface)) - interface_counts_16384(p_.value(s.min_interface));
+  if (reference <= 0 || counts <= 0) return 1;  // unscaled: thresholds taken as counts
+  return counts / reference;
+}
+
+}  // namespace dsv

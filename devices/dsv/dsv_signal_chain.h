@@ -1,0 +1,83 @@
+// The DSV's signal chain (digest §5), once per control cycle:
+//   open loop (modes 1, 3, 6): set point(s) → inversion (62F0h) → four-quadrant ramp →
+//     split into solenoids A/B by the mode of operation (2042h) → dead band → characteristic
+//     optimisation → Imin..Imax → dither;
+//   closed loop (modes 4, 7, 9): set point → Speed± → PID with switched integrator and
+//     feed-forward on the actual value → A/B → Imin..Imax ("Imin always active", inverted
+//     outputs, solenoid-off window) → dither; target and trailing windows for bits 12 and 5;
+// gated by the device state (ACTIVE live, HOLD frozen, INIT/DISABLED off, FAULT per 2043h).
+#pragma once
+
+#include <cstdint>
+
+#include "devices/dsv/actual_value_input.h"
+#include "devices/dsv/dsv_options.h"
+#include "devices/dsv/dsv_parameters.h"
+#include "devices/profiles/dsp408/channel_control.h"
+#include "devices/profiles/dsp408/command_value_ramp.h"
+#include "devices/profiles/dsp408/dither.h"
+#include "devices/profiles/dsp408/pid_controller.h"
+#include "sim/time.h"
+
+namespace dsv {
+
+class DsvSignalChain {
+ public:
+  DsvSignalChain(DsvParameters& parameters, ActualValueInput& input, dsp408::ChannelControl& control,
+                 const DsvOptions& options, canopen::ObjectDictionary& od);
+
+  void reset();
+  /// One control cycle of `dt` seconds at `now`.
+  void process(sim::Time now, double dt);
+  /// Entering HOLD: from ACTIVE the present (ramped / limited) set point is held, otherwise 0.
+  void on_state_change(dsp408::DeviceState from, dsp408::DeviceState to);
+  dsp408::StatusFlags status_flags() const;
+  /// Actual value and deviation objects of the active closed-loop mode (read hooks call this).
+  void publish_measurements();
+
+  double solenoid_a() const { return out_a_; }  ///< A, after dither
+  double solenoid_b() const { return out_b_; }
+  double commanded_a() const { return cmd_a_; }  ///< A, before the driver (open-circuit detection)
+  double commanded_b() const { return cmd_b_; }
+  void set_driver_ok(bool a, bool b) {
+    driver_ok_a_ = a;
+    driver_ok_b_ = b;
+  }
+
+ private:
+  struct LoopObjects {
+    canopen::OdEntry *setpoint, *actual, *deviation, *kp_pos, *kp_neg, *ti_pos, *ti_neg, *iwo_pos, *iwo_neg, *td_pos,
+        *td_neg, *kd_pos, *kd_neg, *iwi_pos, *iwi_neg, *preset_offering, *speed_offering, *i_part_kept,
+        *integrator_type, *target_type, *target_threshold, *target_delay, *trailing_type, *trailing_threshold,
+        *trailing_delay, *off_threshold, *off_delay;
+  };
+  LoopObjects loop_objects(std::int8_t m, canopen::ObjectDictionary& od);
+  const LoopObjects* loop(std::int8_t m) const;
+
+  void configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const;
+  void open_loop(std::int8_t m, bool active, double dt, double& a, double& b);
+  void closed_loop(std::int8_t m, bool active, sim::Time now, double dt, double& a, double& b, bool& off);
+  double to_amperes(std::int64_t counts) const { return static_cast<double>(counts) * o_.current_full_scale() / 16384.0; }
+  double current(int solenoid, double demand, std::int8_t m, bool closed) const;
+
+  DsvParameters& p_;
+  ActualValueInput& input_;
+  dsp408::ChannelControl& control_;
+  const DsvOptions& o_;
+  LoopObjects loops_[3];  // modes 4, 7, 9
+
+  dsp408::CommandValueRamp ramp_, ramp_b_;  // ramp_b_: set point B in mode of operation 3
+  dsp408::RateLimiter limiter_;
+  dsp408::PidController pid_;
+  dsp408::Dither dither_;
+  double hold_w_ = 0;
+  double last_w_ = 0, last_x_ = 0, last_e_ = 0;
+  double target_ = 0, target_b_ = 0;  // ramp targets (for "ramp running")
+  bool window_reached_ = false, trailing_ = false, solenoid_off_ = false;
+  sim::Time in_window_since_{}, out_of_trailing_since_{}, in_off_window_since_{};
+  bool in_window_ = false, out_of_trailing_ = false, in_off_window_ = false;
+  double out_a_ = 0, out_b_ = 0, cmd_a_ = 0, cmd_b_ = 0;
+  bool driver_ok_a_ = true, driver_ok_b_ = true;
+};
+
+}  // namespace dsv

@@ -1,0 +1,180 @@
+#include "devices/md2/md2.h"
+
+#include <cmath>
+
+#include "devices/canopen/pdo_service.h"
+#include "devices/canopen/store_restore.h"
+#include "devices/md2/md2_object_dictionary.h"
+#include "devices/profiles/dsp408/od_value.h"
+
+namespace md2 {
+
+namespace {
+// EMCY codes (§4.4.1) with the error-register bits this emulation sets (generic + class).
+constexpr std::uint16_t kGeneral = 0x1000, kSolenoid1 = 0x2311, kSolenoid2 = 0x2312, kSupplyLow = 0x3412,
+                        kControlVoltageLow = 0x3422;
+constexpr std::uint8_t kRegGeneric = 0x01, kRegCurrent = 0x03, kRegVoltage = 0x05;
+}  // namespace
+
+std::unique_ptr<Md2> Md2::create(const devices::DeviceOptions& options, std::string& error) {
+  Md2Options o;
+  error = o.read(options);
+  if (!error.empty()) return nullptr;
+  if (!mode_supported(o.variant, o.delivery_control_mode)) {
+    error = "setting 'nv_control_mode': mode " + std::to_string(o.delivery_control_mode) + " is not available on this variant";
+    return nullptr;
+  }
+  auto node = std::make_unique<canopen::Node>("md2", build_object_dictionary(o),
+                                              wandfluh::node_policy(o.common, options.store_path), o.node_id);
+  return std::unique_ptr<Md2>(new Md2(std::move(node), o));
+}
+
+Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
+    : ValveApplication(*node, options.common), options_(options), node_owner_(std::move(node)) {
+  auto& n = *node_owner_;
+  auto& policy = n.policy().pdo;
+  // Dynamic mapping (§5.4.16): PDO parameters only in Pre-operational (§2.5), mapping only while
+  // the PDO is disabled and sub 0 is 0; COB-IDs may change at any time there.
+  policy.parameters_preop_only = true;
+  policy.cobid_change_requires_invalid = false;
+  policy.mapping_requires_invalid = true;
+  policy.mapping_entry_requires_sub0_zero = true;
+  policy.dummy_mapping = true;
+  policy.mapping_length_mismatch = canopen::SdoAbort::ParameterIncompatible;
+
+  for (int c = 1; c <= options_.channels; ++c) {
+    channels_.push_back(std::make_unique<Md2Channel>(n.od(), options_, c));
+  }
+  temperature_entry_ = n.od().entry(0x2002, 0);
+  n.od().add_read_hook(0x2002, 0, [this](canopen::OdEntry& e, canopen::Origin) {
+    dsp408::put_rounded(e, temperature_, -55, 150);
+    return canopen::SdoAbort::None;
+  });
+  // Delivery state (§5.8): node address from the command line, the pre-configured control mode.
+  set_delivery_value(wandfluh::NodeAddress::kNodeAddress, 0, {options_.node_id});
+  for (int c = 1; c <= options_.channels; ++c) {
+    set_delivery_value(ChannelIndices::of(c).control_mode(), 0,
+                       {static_cast<std::uint8_t>(options_.delivery_control_mode)});
+  }
+  install();
+  n.set_application(this);
+}
+
+void Md2::reset_model() {
+  for (auto& ch : channels_) ch->reset_model();
+  temperature_ = options_.ambient_temperature;
+}
+
+void Md2::regenerate_pdos() {
+  // "If the control mode has changed, the PDOs must be mapped new. This will be done
+  // automatically after a reset" (§5.4.26): PDO n follows channel n's control mode.
+  auto& od = node_owner_->od();
+  for (int n = 1; n <= 4 && n <= options_.channels; ++n) {
+    const std::int8_t m = channels_[static_cast<std::size_t>(n - 1)]->control_mode();
+    const auto rpdo = default_rpdo_mapping(n, m), tpdo = default_tpdo_mapping(n, m);
+    auto write = [&od](std::uint16_t index, const std::vector<std::uint32_t>& mapping) {
+      od.set<std::uint8_t>(index, 0, static_cast<std::uint8_t>(mapping.size()));
+      for (std::uint8_t sub = 1; sub <= 4; ++sub) {
+        od.set<std::uint32_t>(index, sub, sub <= mapping.size() ? mapping[sub - 1u] : 0x00070020u);
+      }
+    };
+    write(static_cast<std::uint16_t>(0x1600 + n - 1), rpdo);
+    write(static_cast<std::uint16_t>(0x1A00 + n - 1), tpdo);
+  }
+  node_owner_->pdo().reload();
+}
+
+void Md2::detect_errors() {
+  auto& e = errors();
+  e.set_condition(kSolenoid1, kRegCurrent, faults_.solenoid_a_open || faults_.solenoid_a_short);
+  e.set_condition(kSolenoid2, kRegCurrent,
+                  options_.solenoids == 2 && (faults_.solenoid_b_open || faults_.solenoid_b_short));
+  e.set_condition(kSupplyLow, kRegVoltage, faults_.supply_low || supply_voltage_ < options_.supply_min);
+  e.set_condition(kControlVoltageLow, kRegVoltage, faults_.analog_signal_lost && channels_[0]->uses_analog_input());
+  e.set_condition(kGeneral, kRegGeneric, faults_.general_error);
+}
+
+void Md2::process(sim::Time now, sim::Duration dt) {
+  const bool enable = enable_input_ >= 0.5;
+  for (auto& ch : channels_) {
+    if (ch->control().dsm().enable_input() != enable) ch->control().dsm().set_enable_input(enable);
+  }
+  detect_errors();
+  channels_[0]->set_driver_ok(!faults_.solenoid_a_open, !faults_.solenoid_b_open);
+  const double seconds = sim::seconds(dt);
+  for (auto& ch : channels_) ch->process(now, seconds);
+  // Temperature: first-order approach (τ = 60 s) to ambient + k·(I_A² + I_B²) of the drivers.
+  const auto& ch1 = *channels_[0];
+  const double target = options_.ambient_temperature +
+                        options_.thermal_gain * (ch1.solenoid_a * ch1.solenoid_a + ch1.solenoid_b * ch1.solenoid_b);
+  temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
+  dsp408::put_rounded(*temperature_entry_, temperature_, -55, 150);
+}
+
+sim::PortList Md2::ports() {
+  sim::PortList p;
+  for (auto& ch : channels_) {
+    const std::string c = "ch" + std::to_string(ch->number()) + ".";
+    p.push_back({c + "solenoid_a_current", sim::PortDirection::Output, "A", &ch->solenoid_a, "solenoid A (driver 1) current"});
+    p.push_back({c + "solenoid_b_current", sim::PortDirection::Output, "A", &ch->solenoid_b, "solenoid B (driver 2) current"});
+    p.push_back({c + "local_command", sim::PortDirection::Input, "1", &ch->local_command,
+                 "local set point (device mode 2), fraction of full scale"});
+    if (options_.variant == Variant::Controller && ch->number() <= 4) {
+      p.push_back({c + "actual_value", sim::PortDirection::Input, "SI", &ch->actual_value,
+                   "local feedback (actual value mode 2): Pa in modes 4/-5, else the unit's SI quantity"});
+    }
+  }
+  p.push_back({"enable_input", sim::PortDirection::Input, "1", &enable_input_, "hardware enable input (>= 0.5 = on)"});
+  p.push_back({"supply_voltage", sim::PortDirection::Input, "V", &supply_voltage_, "supply voltage"});
+  p.push_back({"temperature", sim::PortDirection::Output, "degC", &temperature_, "device temperature (0x2002)"});
+  return p;
+}
+
+std::string Md2::set_input(std::string_view name, double value) {
+  if (name == "actual") name = "ch1.actual_value";
+  return Device::set_input(name, value);
+}
+
+std::vector<devices::FaultInfo> Md2::faults() const {
+  std::vector<devices::FaultInfo> f = {
+      {"solenoid_a_open", "solenoid driver 1 cable break: EMCY 0x2311, FAULT, no current on A"},
+      {"solenoid_a_short", "solenoid driver 1 short circuit: EMCY 0x2311, FAULT"},
+  };
+  if (options_.solenoids == 2) {
+    f.push_back({"solenoid_b_open", "solenoid driver 2 cable break: EMCY 0x2312, FAULT, no current on B"});
+    f.push_back({"solenoid_b_short", "solenoid driver 2 short circuit: EMCY 0x2312, FAULT"});
+  }
+  f.push_back({"supply_low", "supply voltage too low: EMCY 0x3412, FAULT"});
+  f.push_back({"analog_signal_lost", "analog command/feedback below minimum or cable break: EMCY 0x3422 while the "
+                                     "analog input is in use (0x6042 = 2 or 0x2200 = 2)"});
+  f.push_back({"general_error", "general internal error: EMCY 0x1000, FAULT"});
+  f.push_back({"storage_failure", "non-volatile memory fails: 0x1010/0x1011 abort with 0x06060000"});
+  f.push_back({"paso_control", "the PASO tool holds control: bus control words refused (0x08000021)"});
+  return f;
+}
+
+std::string Md2::inject_fault(std::string_view name, bool active) {
+  bool* flag = nullptr;
+  if (name == "solenoid_a_open") flag = &faults_.solenoid_a_open;
+  if (name == "solenoid_a_short") flag = &faults_.solenoid_a_short;
+  if (options_.solenoids == 2 && name == "solenoid_b_open") flag = &faults_.solenoid_b_open;
+  if (options_.solenoids == 2 && name == "solenoid_b_short") flag = &faults_.solenoid_b_short;
+  if (name == "supply_low") flag = &faults_.supply_low;
+  if (name == "analog_signal_lost") flag = &faults_.analog_signal_lost;
+  if (name == "general_error") flag = &faults_.general_error;
+  if (name == "storage_failure") {
+    faults_.storage_failure = active;
+    node_owner_->store().set_failing(active);
+    return {};
+  }
+  if (name == "paso_control") {
+    faults_.paso_control = active;
+    for (auto& ch : channels_) ch->control().set_paso_control(active);
+    return {};
+  }
+  if (!flag) return Device::inject_fault(name, active);
+  *flag = active;
+  return {};
+}
+
+}  // namespace md2

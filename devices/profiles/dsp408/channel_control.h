@@ -1,0 +1,82 @@
+// Device control of one DSP 408 channel on the object dictionary: control word (0x6040),
+// status word (0x6041), device mode (0x6042, if the product has it), control mode (0x6043) and
+// device local (0x604F), at the channel's indices. It owns the channel's device state machine
+// and its control source:
+//   bus   (604F = 0): the control word drives the state machine;
+//   local (604F = 1): the enable input drives it, bus control words are refused;
+//   PASO  (operator tool, emulated as a condition): the bus has no control.
+// The device-state locks are the manuals': modes may change only in INIT or DISABLED
+// (0x08000022), control words are refused under local control (0x08000021).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "devices/canopen/object_dictionary.h"
+#include "devices/profiles/dsp408/control_word.h"
+#include "devices/profiles/dsp408/device_state_machine.h"
+
+namespace dsp408 {
+
+enum class ControlSource : std::uint8_t { Bus, Local, Paso };
+
+struct ChannelObjects {
+  std::uint16_t control_word = 0x6040;
+  std::uint16_t status_word = 0x6041;
+  std::uint16_t device_mode = 0x6042;   ///< 0 = the product has no device mode object
+  std::uint16_t control_mode = 0x6043;
+  std::uint16_t device_local = 0x604F;
+  /// Under local or PASO control the control mode (and device mode) are refused with
+  /// 0x08000021 too, checked before the device-state lock (DSV; the MD2 manual does not say so).
+  bool local_locks_modes = false;
+
+  /// The same objects of channel `c` (1-based): base + 0x800·(c − 1).
+  static ChannelObjects for_channel(int c, bool with_device_mode);
+};
+
+class ChannelControl {
+ public:
+  /// Installs the hooks on `od`, which must already hold the objects (and outlive this).
+  ChannelControl(canopen::ObjectDictionary& od, const ChannelObjects& objects);
+  ChannelControl(const ChannelControl&) = delete;
+  ChannelControl& operator=(const ChannelControl&) = delete;
+
+  /// Application reset: INIT, control word 0, control source from 0x604F.
+  void power_on();
+
+  DeviceStateMachine& dsm() { return dsm_; }
+  const DeviceStateMachine& dsm() const { return dsm_; }
+  DeviceState state() const { return dsm_.state(); }
+  ControlSource source() const { return source_; }
+  const ChannelObjects& objects() const { return objects_; }
+
+  /// The product's flags for bits 5, 9, 12, 13, 14 (bit 4 comes from the control source).
+  void set_status_flags(std::function<StatusFlags()> f) { flags_ = std::move(f); }
+  std::uint16_t status_word() const;
+  /// Refreshes 0x6041 in the dictionary (for change-driven TPDOs).
+  void publish_status();
+
+  /// Re-reads 0x604F (after the dictionary was reloaded).
+  void refresh_source() { apply_source(); }
+  /// Operator condition: the PASO tool takes control (or gives it back).
+  void set_paso_control(bool on);
+
+  /// Write check for objects that may change only in INIT or DISABLED (modes): 0x08000022.
+  canopen::WriteCheck mode_lock() const;
+  /// Write check for objects the bus may not write under local or PASO control: 0x08000021.
+  canopen::WriteCheck local_lock() const;
+  bool modes_changeable() const { return state() == DeviceState::Init || state() == DeviceState::Disabled; }
+
+ private:
+  void install();
+  void apply_source();
+
+  canopen::ObjectDictionary& od_;
+  ChannelObjects objects_;
+  DeviceStateMachine dsm_;
+  ControlSource source_ = ControlSource::Bus;
+  bool paso_ = false;
+  std::function<StatusFlags()> flags_;
+};
+
+}  // namespace dsp408

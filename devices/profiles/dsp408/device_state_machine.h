@@ -1,0 +1,74 @@
+// The CiA DSP 408 device state machine as the MD2/DSV manuals (§5.2.2) describe it: states
+// NOT_READY → INIT → DISABLED → HOLD → DEVICE_MODE_ACTIVE and the fault states, driven by the
+// control word (bus operation) or by the local enable input (local operation).
+//
+// Transitions are level-triggered on control-word bits D, H, M and re-evaluated until none
+// fires, so one write of 0x0007 in INIT runs TR_2, TR_3, TR_4. The reset-fault bit R acts on
+// its 0→1 edge only (TR_10 / TR_11), and only when the product says no error is still present.
+// A control word that matches no transition leaves the state alone (0x0005 in ACTIVE stays
+// ACTIVE).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "devices/profiles/dsp408/device_state.h"
+
+namespace dsp408 {
+
+class DeviceStateMachine {
+ public:
+  /// Called on every state change (after the state changed), including each step of a chain.
+  using Listener = std::function<void(DeviceState from, DeviceState to)>;
+  /// Asked when R rises in a fault state: true if no error is present any more (the product
+  /// then clears its error bookkeeping); false keeps the fault.
+  using FaultReset = std::function<bool()>;
+
+  void set_listener(Listener l) { listener_ = std::move(l); }
+  void set_fault_reset(FaultReset f) { fault_reset_ = std::move(f); }
+
+  /// TR_0 + TR_1: power-on / application reset; control word 0, INIT.
+  void power_on();
+
+  /// A control word from the bus (SDO or RPDO): stores it, detects the R edge, evaluates.
+  void write_control_word(std::uint16_t cw);
+  std::uint16_t control_word() const { return cw_; }
+
+  /// TR_8 → FAULT_REACTION → TR_12 → FAULT from INIT, DISABLED, HOLD or ACTIVE (an error).
+  /// Returns true if the state changed.
+  bool error();
+  /// TR_8 forced by the communication state machine (NMT Stop, Reset Communication, life
+  /// guarding): from DISABLED, HOLD, ACTIVE, and from INIT only if `from_init`.
+  bool forced_fault(bool from_init);
+  /// TR_567: back to INIT from DISABLED, HOLD or ACTIVE.
+  void force_init();
+
+  /// The hardware enable input. Bus operation: while 0, TR_2 is blocked; a 1→0 edge forces
+  /// TR_567; back at 1 the stored control word is evaluated again. Local operation: a 0→1 edge
+  /// enables (INIT/DISABLED → ACTIVE), a 1→0 edge disables (ACTIVE → DISABLED).
+  void set_enable_input(bool on);
+  bool enable_input() const { return enable_; }
+
+  /// Bus operation (control word from CAN) or local operation (enable input).
+  void set_local(bool local) { local_ = local; }
+  bool local() const { return local_; }
+
+  /// TR_4 is possible only with a control mode selected (MD2/DSV: mode 0 has no function).
+  void set_active_allowed(bool allowed);
+
+  DeviceState state() const { return state_; }
+
+ private:
+  void go(DeviceState to);
+  void evaluate(bool reset_edge);
+
+  DeviceState state_ = DeviceState::NotReady;
+  std::uint16_t cw_ = 0;
+  bool enable_ = true;
+  bool local_ = false;
+  bool active_allowed_ = true;
+  Listener listener_;
+  FaultReset fault_reset_;
+};
+
+}  // namespace dsp408

@@ -1,0 +1,31 @@
+// Dither superimposed on a solenoid current: a square (or sine) wave of a given frequency whose
+// peak-to-peak value is the amplitude (±A/2 around the DC current). The phase follows the
+// simulation clock, so two runs produce the same samples.
+#pragma once
+
+#include "sim/time.h"
+
+namespace dsp408 {
+
+class Dither {
+ public:
+  enum class Shape { Off, Square, Sine };
+
+  void configure(Shape shape, double frequency_hz, double amplitude_pp) {
+    shape_ = shape;
+    frequency_ = frequency_hz;
+    amplitude_ = amplitude_pp;
+  }
+  /// Offset to add at time `t` (0 when off).
+  double offset(sim::Time t) const;
+  /// DC current plus dither, kept within [0, limit]; a current of 0 stays 0 (no dither on a
+  /// switched-off solenoid).
+  double apply(double dc, sim::Time t, double limit) const;
+
+ private:
+  Shape shape_ = Shape::Off;
+  double frequency_ = 0;
+  double amplitude_ = 0;
+};
+
+}  // namespace dsp408

@@ -1,0 +1,149 @@
+// The DSP 408 device state machine: transition table of the MD2/DSV manuals §5.2.2, chained
+// transitions, the reset-fault edge and the enable input.
+#include "devices/profiles/dsp408/device_state_machine.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+using dsp408::DeviceState;
+using dsp408::DeviceStateMachine;
+using dsp408::state_bits;
+
+namespace {
+struct Fixture : ::testing::Test {
+  Fixture() {
+    dsm.set_listener([this](DeviceState from, DeviceState to) { log.push_back({from, to}); });
+    dsm.set_fault_reset([this] { return !error_present; });
+    dsm.power_on();
+    log.clear();
+  }
+  std::uint16_t sw() const { return state_bits(dsm.state()); }
+  DeviceStateMachine dsm;
+  bool error_present = false;
+  std::vector<std::pair<DeviceState, DeviceState>> log;
+};
+}  // namespace
+
+TEST_F(Fixture, PowerOnIsInitWithStatus0008) { EXPECT_EQ(sw(), 0x8); }
+
+TEST_F(Fixture, OneWriteOf0007ChainsTr2Tr3Tr4) {
+  dsm.write_control_word(0x0007);
+  EXPECT_EQ(dsm.state(), DeviceState::Active);
+  EXPECT_EQ(sw(), 0xF);
+  ASSERT_EQ(log.size(), 3u);
+  EXPECT_EQ(log[0].second, DeviceState::Disabled);
+  EXPECT_EQ(log[1].second, DeviceState::Hold);
+  EXPECT_EQ(log[2].second, DeviceState::Active);
+}
+
+TEST_F(Fixture, ControlWordSequenceFromTheChecklist) {
+  dsm.write_control_word(0x0007);
+  const std::pair<std::uint16_t, std::uint16_t> steps[] = {{0x0003, 0xB}, {0x0001, 0x9}, {0x0000, 0x8},
+                                                           {0x0001, 0x9}, {0x0003, 0xB}, {0x0007, 0xF}};
+  for (auto [cw, expected] : steps) {
+    dsm.write_control_word(cw);
+    EXPECT_EQ(sw(), expected) << "cw " << cw;
+  }
+  dsm.write_control_word(0x0000);  // TR_5, TR_6, TR_7 in one write
+  EXPECT_EQ(sw(), 0x8);
+}
+
+TEST_F(Fixture, PatternsWithoutATransitionLeaveTheStateAlone) {
+  dsm.write_control_word(0x0006);  // INIT: D = 0
+  EXPECT_EQ(dsm.state(), DeviceState::Init);
+  dsm.write_control_word(0x0002);
+  EXPECT_EQ(dsm.state(), DeviceState::Init);
+  dsm.write_control_word(0x0007);
+  dsm.write_control_word(0x0005);  // ACTIVE, M = 1, H = 0: no row matches
+  EXPECT_EQ(dsm.state(), DeviceState::Active);
+  dsm.write_control_word(0x0003);
+  dsm.write_control_word(0x0002);  // HOLD: TR_6 needs H = 0
+  EXPECT_EQ(dsm.state(), DeviceState::Hold);
+  dsm.write_control_word(0x0004);  // HOLD, M = 1 without D, H: no row matches
+  EXPECT_EQ(dsm.state(), DeviceState::Hold);
+  // Reserved and manufacturer bits are ignored.
+  dsm.write_control_word(0x8FF7);
+  EXPECT_EQ(dsm.state(), DeviceState::Active);
+}
+
+TEST_F(Fixture, ErrorGoesThroughFaultReactionToFault) {
+  dsm.write_control_word(0x0007);
+  log.clear();
+  EXPECT_TRUE(dsm.error());
+  EXPECT_EQ(sw(), 0x1);
+  ASSERT_EQ(log.size(), 2u);
+  EXPECT_EQ(log[0].second, DeviceState::FaultReaction);
+  EXPECT_EQ(log[1].second, DeviceState::Fault);
+  EXPECT_FALSE(dsm.error());  // already in FAULT
+  // Control words without a reset edge do nothing in FAULT.
+  dsm.write_control_word(0x0007);
+  dsm.write_control_word(0x0000);
+  EXPECT_EQ(dsm.state(), DeviceState::Fault);
+}
+
+TEST_F(Fixture, FaultResetNeedsARisingEdgeAndNoErrorPresent) {
+  dsm.write_control_word(0x0001);
+  dsm.error();
+  error_present = true;
+  dsm.write_control_word(0x0009);  // edge, but the error is still there
+  EXPECT_EQ(dsm.state(), DeviceState::Fault);
+  error_present = false;
+  dsm.write_control_word(0x0009);  // no new edge
+  EXPECT_EQ(dsm.state(), DeviceState::Fault);
+  dsm.write_control_word(0x0001);
+  dsm.write_control_word(0x0009);  // TR_10
+  EXPECT_EQ(sw(), 0x9);
+}
+
+TEST_F(Fixture, FaultResetWithHoldEnableGoesToHoldAndChainsOn) {
+  dsm.write_control_word(0x0007);
+  dsm.error();
+  dsm.write_control_word(0x000F);  // R edge with H = 1: TR_11 → HOLD → TR_4 → ACTIVE
+  EXPECT_EQ(sw(), 0xF);
+  dsm.error();
+  dsm.write_control_word(0x0000);
+  dsm.write_control_word(0x0008);  // TR_10 → DISABLED → TR_7 → INIT
+  EXPECT_EQ(sw(), 0x8);
+}
+
+TEST_F(Fixture, FaultFromInitForHardwareErrorsButForcedFaultsSkipInit) {
+  EXPECT_FALSE(dsm.forced_fault(false));
+  EXPECT_EQ(dsm.state(), DeviceState::Init);
+  EXPECT_TRUE(dsm.forced_fault(true));
+  EXPECT_EQ(dsm.state(), DeviceState::Fault);
+  dsm.power_on();
+  EXPECT_TRUE(dsm.error());
+  EXPECT_EQ(dsm.state(), DeviceState::Fault);
+}
+
+TEST_F(Fixture, EnableInputBlocksTr2AndItsFallingEdgeForcesInit) {
+  dsm.set_enable_input(false);
+  dsm.write_control_word(0x0007);
+  EXPECT_EQ(dsm.state(), DeviceState::Init);
+  dsm.set_enable_input(true);  // the stored control word is evaluated again
+  EXPECT_EQ(dsm.state(), DeviceState::Active);
+  dsm.set_enable_input(false);  // TR_567
+  EXPECT_EQ(dsm.state(), DeviceState::Init);
+}
+
+TEST_F(Fixture, ActiveNeedsAControlMode) {
+  dsm.set_active_allowed(false);
+  dsm.write_control_word(0x0007);
+  EXPECT_EQ(dsm.state(), DeviceState::Hold);
+  dsm.set_active_allowed(true);
+  dsm.write_control_word(0x0007);
+  EXPECT_EQ(dsm.state(), DeviceState::Active);
+}
+
+TEST_F(Fixture, LocalOperationFollowsTheEnableInputEdges) {
+  dsm.set_local(true);
+  dsm.write_control_word(0x0007);  // ignored in local operation
+  EXPECT_EQ(dsm.state(), DeviceState::Init);
+  dsm.set_enable_input(false);
+  EXPECT_EQ(dsm.state(), DeviceState::Init);
+  dsm.set_enable_input(true);
+  EXPECT_EQ(dsm.state(), DeviceState::Active);
+  dsm.set_enable_input(false);
+  EXPECT_EQ(dsm.state(), DeviceState::Disabled);
+}
