@@ -3,6 +3,7 @@
 // Each product adds one include and one entry below.
 #include "devices/dsv/dsv_product.h"
 #include "devices/md2/md2_product.h"
+#include "devices/vtvpcd/product.h"
 
 namespace devices {
 
@@ -11,6 +12,7 @@ const std::vector<Product>& products() {
     std::vector<Product> list;
     list.push_back(md2::product());
     list.push_back(dsv::product());
+    list.push_back(vtvpcd::product());
     return list;
   }();
   return kProducts;

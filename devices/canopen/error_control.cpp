@@ -65,6 +65,7 @@ void ErrorControl::on_frame(const sim::CanFrame& frame, sim::Time now) {
 
 void ErrorControl::process(sim::Time now) {
   const std::uint16_t period = heartbeat_period_ms();
+  if (period != 0 && !node_.policy().error_control.guard_while_heartbeat) armed_ = false;  // heartbeat replaces guarding
   if (period != 0 && now >= next_heartbeat_) {
     node_.send(sim::CanFrame::data_frame(0x700u + node_.node_id(), {static_cast<std::uint8_t>(node_.nmt_state())}));
     next_heartbeat_ += sim::milliseconds(period);

@@ -43,7 +43,8 @@ struct NmtPolicy {
 
 struct ErrorControlPolicy {
   /// Answer node-guarding RTRs while the heartbeat producer runs (CiA 301 says they are
-  /// exclusive; many devices answer anyway).
+  /// exclusive; many devices answer anyway). false: RTRs are ignored and life guarding is
+  /// disarmed while 0x1017 != 0 (no life-guarding event for RTRs the node would not answer).
   bool guard_while_heartbeat = true;
   /// EMCY for a life-guarding or heartbeat-consumer timeout; 0 = none.
   std::uint16_t life_guard_emcy = 0x8130;
@@ -81,6 +82,12 @@ struct PdoPolicy {
   AsyncTriggers type255{};
   /// Send each event-driven TPDO once when entering Operational.
   bool send_async_on_operational = false;
+  /// TPDOs answer remote requests on their COB-ID (CiA 301; COB-ID bit 30 = 0). false: every
+  /// remote request for a TPDO identifier is ignored (devices that send only on their timer).
+  bool tpdo_remote_requests = true;
+  /// A write to a TPDO's event timer (sub 5) restarts it: the next timer-driven frame follows one
+  /// new period after the write. false: the running period ends as scheduled.
+  bool event_timer_restart_on_write = false;
   /// Remote request whose DLC differs from the TPDO length.
   enum class RtrDlcMismatch : std::uint8_t { Answer, EmptyFrame, Ignore } rtr_dlc_mismatch = RtrDlcMismatch::Answer;
   /// RPDO shorter than its mapping: EMCY 0x8210 (CiA 301) or silently ignored. Longer: 0x8220.

@@ -73,6 +73,14 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
     od.add_check(comm_index, sub, preop_only, CheckStage::State);
     od.add_observer(comm_index, sub, reload_all);
   }
+  if (dir == PdoDirection::Transmit && od.entry(comm_index, 5) && od.entry(comm_index, 5)->writable()) {
+    od.add_observer(comm_index, 5, [this, comm_index](OdEntry&, Origin) {
+      if (!node_.policy().pdo.event_timer_restart_on_write) return;
+      for (auto& t : tpdos_) {
+        if (t.comm_index == comm_index) t.next_timer = node_.now() + sim::milliseconds(event_timer_ms(t));
+      }
+    });
+  }
   if (od.entry(comm_index, 1) && od.entry(comm_index, 1)->writable()) {
     od.add_check(comm_index, 1, [this, &od, comm_index](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
       if (!external(origin)) return SdoAbort::None;
@@ -334,7 +342,7 @@ void PdoService::request_tpdo(int number) {
 }
 
 void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time now) {
-  if (!pdo_allowed(node_.nmt_state()) || !frame.rtr) return;
+  if (!pdo_allowed(node_.nmt_state()) || !frame.rtr || !node_.policy().pdo.tpdo_remote_requests) return;
   auto it = std::find_if(tpdos_.begin(), tpdos_.end(), [number](const Tpdo& t) { return t.number == number; });
   if (it == tpdos_.end() || !it->valid || !it->rtr_allowed || it->mapping.length == 0) return;
   Tpdo& t = *it;

@@ -84,3 +84,22 @@ TEST(LifeGuarding, ErrorBehaviourGoesPreOperationalFromOperational) {
   h.run_ms(30);
   EXPECT_EQ(h.node().nmt_state(), canopen::NmtState::PreOperational);  // 0x1029:01 = 0
 }
+
+TEST(LifeGuarding, HeartbeatDisarmsLifeGuardingWhenGuardingIsExclusive) {
+  canopen::NodePolicy policy;
+  policy.error_control.guard_while_heartbeat = false;
+  vtest::CanopenHarness h(vtest::make_generic_od(), policy, 5);
+  h.power_on();
+  h.take();
+  ASSERT_EQ(h.write(0x1800, 1, 0x80000185u, 4), 0u);
+  ASSERT_EQ(h.write(0x100C, 0, 100, 2), 0u);
+  ASSERT_EQ(h.write(0x100D, 0, 3, 1), 0u);
+  h.send(Frame::remote(0x705, 1));  // arms life guarding (300 ms)
+  EXPECT_EQ(h.take(), Frames{Frame(0x705, {0x7F})});
+  ASSERT_EQ(h.write(0x1017, 0, 1000, 2), 0u);  // heartbeat replaces guarding
+  h.send(Frame::remote(0x705, 1));
+  EXPECT_TRUE(h.take().empty());  // not answered
+  h.run_ms(900);
+  EXPECT_TRUE(h.take().empty());  // no life-guarding EMCY: guarding is off while the heartbeat runs
+  EXPECT_FALSE(h.node().error_control().life_guarding_armed());
+}

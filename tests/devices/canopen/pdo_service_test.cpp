@@ -178,3 +178,41 @@ TEST_F(PdoTest, PdoSwitchedOffByTheDeviceIsSilentButReadsValid) {
   h.send(0x080, {});
   EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x78, 0x56, 0x34, 0x12})});
 }
+
+TEST(PdoPolicyKnobs, TpdoRemoteRequestsCanBeIgnored) {
+  canopen::NodePolicy policy;
+  policy.pdo.tpdo_remote_requests = false;
+  vtest::CanopenHarness h(vtest::make_generic_od(), policy, 5);
+  h.power_on();
+  h.nmt(0x01, 5);
+  h.run_ticks(1);
+  h.take();
+  h.send(Frame::remote(0x185, 3));
+  h.send(Frame::remote(0x285, 4));
+  EXPECT_TRUE(h.take().empty());
+}
+
+TEST(PdoPolicyKnobs, EventTimerWriteRestartsThePeriod) {
+  for (const bool restart : {false, true}) {
+    canopen::NodePolicy policy;
+    policy.pdo.type255 = {.on_change = false, .after_rpdo = false, .on_timer = true};
+    policy.pdo.event_timer_restart_on_write = restart;
+    vtest::CanopenHarness h(vtest::make_generic_od(), policy, 5);
+    h.power_on();
+    h.nmt(0x01, 5);  // event timer 0: nothing scheduled
+    h.run_ms(50);
+    h.take();
+    const auto written = h.now();
+    ASSERT_EQ(h.write(0x1800, 5, 20, 2), 0u);
+    h.run_ms(45);
+    const auto times = h.take_times();
+    ASSERT_FALSE(times.empty());
+    if (restart) {
+      ASSERT_EQ(times.size(), 2u);
+      EXPECT_EQ((times[0] - written).count(), 20000);  // one full period after the write
+      EXPECT_EQ((times[1] - times[0]).count(), 20000);
+    } else {
+      EXPECT_LE((times[0] - written).count(), 1000);  // the stale deadline fires at once
+    }
+  }
+}

@@ -1,0 +1,68 @@
+#include "devices/vtvpcd/command_sources.h"
+
+#include <algorithm>
+
+#include "devices/vtvpcd/manufacturer_objects.h"
+#include "devices/vtvpcd/parameter_conversion.h"
+
+namespace vtvpcd {
+
+namespace {
+constexpr double kMaxPressureBar = 600.0;
+constexpr double kMaxRampS = 300.0;
+constexpr double kMinTiMs = 2.0, kMaxTiMs = 30000.0;
+constexpr double kMaxKp = 255.0;
+
+double eu(const ParameterSource& p, std::uint16_t index, Scale scale) { return to_eu(p.raw(index), scale); }
+std::uint16_t at(std::uint16_t base, int k) { return static_cast<std::uint16_t>(base + k); }
+}  // namespace
+
+PumpLimits limits_of(PumpType type) {
+  return type == PumpType::A4VSG ? PumpLimits{-100.0, 100.0} : PumpLimits{0.0, 100.0};
+}
+
+SelectedCommands select_commands(const SetSelection& sel, const ParameterSource& p, const AnalogInputs& analog,
+                                 const Settings& s) {
+  SelectedCommands c;
+  const int k = sel.set;
+  const int g = sel.group();
+  if (sel.binary) {
+    c.alpha_pct = eu(p, at(idx::kAngleCmdBinary0, k), kScalePercent);
+    c.pressure_bar = eu(p, at(idx::kPressCmdBinary0, k), kScaleTable);
+    c.power_pct = eu(p, at(idx::kPowerCmdBinary0, k), kScaleTable);
+    c.ramp_alpha_s = eu(p, at(idx::kAngleRampBinary0, k), kScaleRamp);
+    c.ramp_pressure_s = eu(p, at(idx::kPressRampBinary0, k), kScaleRamp);
+  } else {
+    if (s.cmd_source == CommandSource::Bus) {
+      c.alpha_pct = eu(p, idx::kAngleCmdBus, kScalePercent);
+      const double pressure = eu(p, idx::kPressureCmdBus, kScalePercent);
+      c.pressure_bar = s.pressure_bus_unit == PressureBusUnit::Bar ? pressure : pressure * s.p_ref_bar / 100.0;
+      c.power_pct = eu(p, idx::kPowerCmdBus, kScalePercent);
+    } else {
+      c.alpha_pct = analog.angle_b14_b16_pct;
+      c.pressure_bar = analog.pressure_b18_b20_bar;
+      c.power_pct = analog.power_f8_f10_pct;
+    }
+    if (s.direct_mode_ramps_set0) {
+      c.ramp_alpha_s = eu(p, idx::kAngleRampBinary0, kScaleRamp);
+      c.ramp_pressure_s = eu(p, idx::kPressRampBinary0, kScaleRamp);
+    }
+  }
+  c.kp = eu(p, at(idx::kContrPBinary0, 4 * g), kScaleGain);
+  c.ti_ms = eu(p, at(idx::kContrIBinary0, 4 * g), kScaleOne);
+  c.slave_alpha_pct = s.cmd_source == CommandSource::Bus ? eu(p, idx::kResAngleCmdBus, kScalePercent)
+                                                         : analog.angle_b2_b4_pct;
+
+  const auto lim = limits_of(s.pump_type);
+  c.alpha_pct = std::clamp(c.alpha_pct, lim.alpha_lo, lim.alpha_hi);
+  c.slave_alpha_pct = std::clamp(c.slave_alpha_pct, lim.alpha_lo, lim.alpha_hi);
+  c.pressure_bar = std::clamp(c.pressure_bar, 0.0, kMaxPressureBar);
+  c.power_pct = std::clamp(c.power_pct, 0.0, 100.0);
+  c.ramp_alpha_s = std::clamp(c.ramp_alpha_s, 0.0, kMaxRampS);
+  c.ramp_pressure_s = std::clamp(c.ramp_pressure_s, 0.0, kMaxRampS);
+  c.kp = std::clamp(c.kp, 0.0, kMaxKp);
+  c.ti_ms = std::clamp(c.ti_ms, kMinTiMs, kMaxTiMs);
+  return c;
+}
+
+}  // namespace vtvpcd

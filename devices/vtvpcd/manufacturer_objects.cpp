@@ -1,0 +1,145 @@
+#include "devices/vtvpcd/manufacturer_objects.h"
+
+#include <array>
+
+namespace vtvpcd {
+
+namespace {
+using DT = canopen::DataType;
+
+// section, index, name, type, read-only, printed min, printed max, scale, unit, start raw,
+// strict min, strict max, range-checked. Strict ranges differ from the print only where the
+// print is a placeholder: Pressure CMD (BUS) takes bar up to 600 (A8), res. Angle CMD (BUS) is
+// an angle in % (A9), Trigger is a bitfield (A11).
+constexpr std::array<ObjectSpec, 116> kObjects{{
+    {"4.1", 0x2F07, "act. Angle", DT::Integer32, true, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.2", 0x2F10, "act. pressure A", DT::Integer32, true, 1, 600, kScalePercent, "bar", 0, 1, 600, true},
+    {"4.3", 0x2F0F, "act. pressure B", DT::Integer32, true, 1, 600, kScalePercent, "bar", 0, 1, 600, true},
+    {"4.4", 0x2F19, "act. valve", DT::Integer32, true, -100, 100, kScaleTable, "%", 0, -100, 100, true},
+    {"4.5", 0x2F33, "Angle CMD", DT::Integer32, true, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.6", 0x2C72, "Angle CMD (BUS)", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.7", 0x2F03, "Angle CMD (b14/b16)", DT::Integer32, true, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.8", 0x2F1A, "Angle CMD (b2/b4)", DT::Integer32, true, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.9", 0x2F2F, "Angle CMD binary", DT::Integer32, true, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.10", 0x2001, "Angle CMD binary 0", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.11", 0x2002, "Angle CMD binary 1", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.12", 0x2003, "Angle CMD binary 2", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.13", 0x2004, "Angle CMD binary 3", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.14", 0x2005, "Angle CMD binary 4", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.15", 0x2006, "Angle CMD binary 5", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.16", 0x2007, "Angle CMD binary 6", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.17", 0x2008, "Angle CMD binary 7", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.18", 0x2009, "Angle CMD binary 8", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.19", 0x200A, "Angle CMD binary 9", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.20", 0x200B, "Angle CMD binary 10", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.21", 0x200C, "Angle CMD binary 11", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.22", 0x200D, "Angle CMD binary 12", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.23", 0x200E, "Angle CMD binary 13", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.24", 0x200F, "Angle CMD binary 14", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.25", 0x2010, "Angle CMD binary 15", DT::Integer32, false, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.26", 0x2101, "Angle Ramp binary 0", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.27", 0x2102, "Angle Ramp binary 1", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.28", 0x2103, "Angle Ramp binary 2", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.29", 0x2104, "Angle Ramp binary 3", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.30", 0x2105, "Angle Ramp binary 4", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.31", 0x2106, "Angle Ramp binary 5", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.32", 0x2107, "Angle Ramp binary 6", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.33", 0x2108, "Angle Ramp binary 7", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.34", 0x2109, "Angle Ramp binary 8", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.35", 0x210A, "Angle Ramp binary 9", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.36", 0x210B, "Angle Ramp binary 10", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.37", 0x210C, "Angle Ramp binary 11", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.38", 0x210D, "Angle Ramp binary 12", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.39", 0x210E, "Angle Ramp binary 13", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.40", 0x210F, "Angle Ramp binary 14", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.41", 0x2110, "Angle Ramp binary 15", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.42", 0x2C68, "Bus Status", DT::Unsigned16, true, -100, 100, kScaleOne, "", 0, -100, 100, true},
+    {"4.43", 0x2423, "Contr I binary 0~ 3", DT::Unsigned16, false, 2, 30000, kScaleOne, "ms", 100, 2, 30000, true},
+    {"4.44", 0x2427, "Contr I binary 4~ 7", DT::Unsigned16, false, 2, 30000, kScaleOne, "ms", 100, 2, 30000, true},
+    {"4.45", 0x242B, "Contr I binary 8~11", DT::Unsigned16, false, 2, 30000, kScaleOne, "ms", 100, 2, 30000, true},
+    {"4.46", 0x242F, "Contr I binary 12~15", DT::Unsigned16, false, 2, 30000, kScaleOne, "ms", 100, 2, 30000, true},
+    {"4.47", 0x2323, "Contr P binary 0~ 3", DT::Unsigned16, false, 0, 255, kScaleGain, "", 128, 0, 255, true},
+    {"4.48", 0x2327, "Contr P binary 4~ 7", DT::Unsigned16, false, 0, 255, kScaleGain, "", 128, 0, 255, true},
+    {"4.49", 0x232B, "Contr P binary 8~11", DT::Unsigned16, false, 0, 255, kScaleGain, "", 128, 0, 255, true},
+    {"4.50", 0x232F, "Contr P binary 12~15", DT::Unsigned16, false, 0, 255, kScaleGain, "", 128, 0, 255, true},
+    {"4.51", 0x2F27, "Discrete Inputs", DT::Unsigned16, true, 0, 511, kScaleOne, "", 0, 0, 511, true},
+    {"4.52", 0x2F26, "Discrete Outputs", DT::Unsigned16, true, 0, 255, kScaleOne, "", 0, 0, 255, true},
+    {"4.53", 0x2F2C, "Gain LVDT pump", DT::Unsigned16, false, 0, 200, kScaleLvdtGain, "%", 1260, 0, 200, true},
+    {"4.54", 0x2F18, "Power CMD", DT::Integer32, true, 0, 100, kScalePercent, "%", 0, 0, 100, true},
+    {"4.55", 0x2C76, "Power CMD (BUS)", DT::Integer32, false, 0, 100, kScalePercent, "%", 32767, 0, 100, true},
+    {"4.56", 0x2F17, "Power CMD (f8/f10)", DT::Integer32, true, 0, 100, kScalePercent, "%", 0, 0, 100, true},
+    {"4.57", 0x2F31, "Power CMD binary", DT::Integer32, true, -100, 100, kScalePercent, "%", 0, -100, 100, true},
+    {"4.58", 0x2045, "Power CMD binary 0", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.59", 0x2046, "Power CMD binary 1", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.60", 0x2047, "Power CMD binary 2", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.61", 0x2048, "Power CMD binary 3", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.62", 0x2049, "Power CMD binary 4", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.63", 0x204A, "Power CMD binary 5", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.64", 0x204B, "Power CMD binary 6", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.65", 0x204C, "Power CMD binary 7", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.66", 0x204D, "Power CMD binary 8", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.67", 0x204E, "Power CMD binary 9", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.68", 0x204F, "Power CMD binary 10", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.69", 0x2050, "Power CMD binary 11", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.70", 0x2051, "Power CMD binary 12", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.71", 0x2052, "Power CMD binary 13", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.72", 0x2053, "Power CMD binary 14", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.73", 0x2054, "Power CMD binary 15", DT::Integer32, false, 0, 100, kScaleTable, "%", 32770, 0, 100, true},
+    {"4.74", 0x2F0E, "Press CMD", DT::Integer32, true, 1, 600, kScalePressCmdPrinted, "bar", 0, 1, 600, true},
+    {"4.75", 0x2F0D, "Press CMD (b18/b20)", DT::Integer32, true, 1, 600, kScalePercent, "bar", 0, 1, 600, true},
+    {"4.76", 0x2F30, "Press CMD binary", DT::Integer32, true, -100, 100, kScalePercent, "bar", 0, -100, 100, true},
+    {"4.77", 0x2123, "Press Ramp binary 0", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.78", 0x2124, "Press Ramp binary 1", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.79", 0x2125, "Press Ramp binary 2", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.80", 0x2126, "Press Ramp binary 3", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.81", 0x2127, "Press Ramp binary 4", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.82", 0x2128, "Press Ramp binary 5", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.83", 0x2129, "Press Ramp binary 6", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.84", 0x212A, "Press Ramp binary 7", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.85", 0x212B, "Press Ramp binary 8", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.86", 0x212C, "Press Ramp binary 9", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.87", 0x212D, "Press Ramp binary 10", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.88", 0x212E, "Press Ramp binary 11", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.89", 0x212F, "Press Ramp binary 12", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.90", 0x2130, "Press Ramp binary 13", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.91", 0x2131, "Press Ramp binary 14", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.92", 0x2132, "Press Ramp binary 15", DT::Unsigned16, false, 0, 300, kScaleRamp, "s", 0, 0, 300, true},
+    {"4.93", 0x2023, "Press. CMD binary 0", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.94", 0x2024, "Press. CMD binary 1", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.95", 0x2025, "Press. CMD binary 2", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.96", 0x2026, "Press. CMD binary 3", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.97", 0x2027, "Press. CMD binary 4", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.98", 0x2028, "Press. CMD binary 5", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.99", 0x2029, "Press. CMD binary 6", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.100", 0x202A, "Press. CMD binary 7", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.101", 0x202B, "Press. CMD binary 8", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.102", 0x202C, "Press. CMD binary 9", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.103", 0x202D, "Press. CMD binary 10", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.104", 0x202E, "Press. CMD binary 11", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.105", 0x202F, "Press. CMD binary 12", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.106", 0x2030, "Press. CMD binary 13", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.107", 0x2031, "Press. CMD binary 14", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.108", 0x2032, "Press. CMD binary 15", DT::Integer32, false, 0, 600, kScaleTable, "bar", 114695, 0, 600, true},
+    {"4.109", 0x2C74, "Pressure CMD (BUS)", DT::Integer32, false, -100, 100, kScalePercent, "bar", 114685, -100, 600, true},
+    {"4.110", 0x2F32, "pressure stroke", DT::Integer32, true, -100, 100, kScaleTable, "bar", 0, -100, 100, true},
+    {"4.111", 0x2F20, "res. Angle CMD", DT::Integer32, true, -100, 100, kScaleTable, "%", 0, -100, 100, true},
+    {"4.112", 0x2C99, "res. Angle CMD (BUS)", DT::Integer32, false, 1, 600, kScalePercent, "%", 0, -100, 100, true},
+    {"4.113", 0x2C67, "Trigger", DT::Unsigned32, false, 0, 32, kScaleOne, "", 0, 0, 32, false},
+    {"4.114", 0x2F1F, "valve CMD", DT::Integer32, true, -100, 100, kScaleTable, "%", 0, -100, 100, true},
+    {"4.115", 0x2C69, "Zeropoint pump", DT::Integer32, false, -20, 20, kScaleTable, "%", 0, -20, 20, true},
+    {"4.116", 0x2F2A, "Zeropoint valve", DT::Integer16, false, -12, 12, kScaleValveZero, "%", 0, -12, 12, true},
+}};
+}  // namespace
+
+std::int64_t ObjectSpec::strict_raw_min() const { return static_cast<std::int64_t>(to_raw_exact(strict_min, scale)); }
+std::int64_t ObjectSpec::strict_raw_max() const { return static_cast<std::int64_t>(to_raw_exact(strict_max, scale)); }
+
+std::span<const ObjectSpec> manufacturer_objects() { return kObjects; }
+
+const ObjectSpec* find_object_spec(std::uint16_t index) {
+  for (const auto& o : kObjects)
+    if (o.index == index) return &o;
+  return nullptr;
+}
+
+}  // namespace vtvpcd

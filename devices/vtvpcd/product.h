@@ -1,0 +1,14 @@
+// The VT-VPCD as a registry product: `vplant node --device vtvpcd`, `vplant eds vtvpcd`.
+#pragma once
+
+#include <string>
+
+#include "devices/registry.h"
+
+namespace vtvpcd {
+
+devices::Product product();
+/// The EDS of the emulated card with its default configuration (what devices/vtvpcd/vtvpcd.eds holds).
+std::string eds_text();
+
+}  // namespace vtvpcd

@@ -1,0 +1,103 @@
+// The emulated VT-VPCD pump controller card: a CANopen node (the manual's communication and its
+// 116 manufacturer objects) plus the card's control loop, fault handling and discrete I/O, with
+// ports to the plant. It is the node's Application: it reacts to resets, NMT and communication
+// errors and runs one control cycle per control period in process().
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "devices/device.h"
+#include "devices/vtvpcd/builtin_pump_model.h"
+#include "devices/vtvpcd/command_sources.h"
+#include "devices/vtvpcd/fault_monitor.h"
+#include "devices/vtvpcd/loop_monitor.h"
+#include "devices/vtvpcd/parameter_conversion.h"
+#include "devices/vtvpcd/pump_controller.h"
+#include "devices/vtvpcd/settings.h"
+
+namespace vtvpcd {
+
+class VtvpcdDevice final : public devices::Device, public canopen::Application {
+ public:
+  static constexpr std::uint8_t kFactoryNodeId = 63;
+
+  /// Builds the card; nullptr with `error` on bad options.
+  static std::unique_ptr<VtvpcdDevice> create(const devices::DeviceOptions& options, std::string& error);
+  ~VtvpcdDevice() override;
+
+  // devices::Device
+  canopen::Node& node() override { return *node_; }
+  sim::PortList ports() override;
+  std::vector<devices::FaultInfo> faults() const override;
+  std::string inject_fault(std::string_view name, bool active) override;
+  /// Unpowered, the pilot valve is de-energised.
+  void power_off() override;
+
+  // canopen::Application
+  void on_reset_application() override;
+  void on_reset_communication() override;
+  void after_reset_communication() override;
+  void on_nmt_command(canopen::NmtCommand command) override;
+  void on_nmt_state_changed(canopen::NmtState from, canopen::NmtState to) override;
+  bool on_communication_error(canopen::CommError error) override;
+  void on_communication_recovered(canopen::CommError error) override;
+  void process(sim::Time now, sim::Duration dt) override;
+
+  // Side interface (tests, scenarios).
+  const Settings& settings() const { return settings_; }
+  const ControlOutputs& control() const { return controller_.outputs(); }
+  const FaultMonitor& fault_monitor() const { return *faults_; }
+  BuiltinPumpModel* builtin_plant() { return builtin_ ? &*builtin_ : nullptr; }
+  /// Discrete Inputs word as the card reads it from the input ports.
+  std::uint16_t discrete_inputs() const;
+
+ private:
+  explicit VtvpcdDevice(Settings settings);
+  class OdParameters;
+
+  void install_device_hooks();
+  void control_cycle(double dt_s);
+  void publish(const SetSelection& sel, double alpha_meas, double p_a, double p_b, std::uint16_t di_word);
+  void put(std::size_t slot, std::int64_t raw);
+  void put_eu(std::size_t slot, double eu, Scale scale);
+  void apply_plant_to_inputs();
+
+  Settings settings_;
+  std::unique_ptr<canopen::Node> node_;
+  std::unique_ptr<OdParameters> params_;
+  PumpController controller_;
+  std::unique_ptr<FaultMonitor> faults_;
+  LoopMonitor loop_monitor_;
+  std::optional<BuiltinPumpModel> builtin_;
+
+  // Ports (plant side, SI / normalised).
+  double pilot_command_ = 0;          ///< out: pilot valve command, -1..1 (= spool command / 100 %)
+  double swivel_angle_ = 0;           ///< in: LVDT swivel angle, -1..1
+  double pressure_a_ = 0;             ///< in: Pa
+  double pressure_b_ = 0;             ///< in: Pa
+  double pilot_spool_position_ = 0;   ///< in: pilot spool position, -1..1 (act. valve)
+  std::array<double, 6> di_{};        ///< in: DI1..DI6, 0/1
+  double enable_ = 1;                 ///< in: Enable, 0/1
+  double analog_angle_b14_b16_ = 0;   ///< in: -1..1
+  double analog_angle_b2_b4_ = 0;     ///< in: -1..1
+  double analog_pressure_b18_b20_ = 0;  ///< in: Pa
+  double analog_power_f8_f10_ = 0;    ///< in: 0..1
+
+  // Run state.
+  std::vector<canopen::OdEntry*> out_;  ///< read-only objects the cycle publishes, by slot
+  sim::Duration cycle_debt_{0};
+  bool previous_enable_ = true;
+  bool lifeguard_timeout_ = false;
+  bool heartbeat_timeout_ = false;
+  bool watchdog_pending_ = false;
+  bool nmt_reset_pending_ = false;
+  std::uint8_t requested_node_id_ = 0;
+  std::vector<std::pair<canopen::OdEntry*, canopen::Bytes>> kept_communication_;  ///< nmt_82 = can_controller
+};
+
+}  // namespace vtvpcd
