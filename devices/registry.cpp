@@ -4,6 +4,7 @@
 #include "devices/dsv/dsv_product.h"
 #include "devices/md2/md2_product.h"
 #include "devices/vtvpcd/product.h"
+#include "devices/hlt1100/hlt1100_device.h"
 
 namespace devices {
 
@@ -13,6 +14,7 @@ const std::vector<Product>& products() {
     list.push_back(md2::product());
     list.push_back(dsv::product());
     list.push_back(vtvpcd::product());
+    list.push_back(hlt1100::product());
     return list;
   }();
   return kProducts;

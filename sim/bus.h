@@ -58,6 +58,10 @@ class Bus {
   Bus& operator=(const Bus&) = delete;
 
   const std::string& name() const { return name_; }
+  /// The wire's bit rate in kbit/s (0 = unspecified: every node is assumed to match). A node
+  /// configured for another rate can neither send nor receive (see canopen::Node).
+  void set_bit_rate_kbit(unsigned kbit) { bit_rate_kbit_ = kbit; }
+  unsigned bit_rate_kbit() const { return bit_rate_kbit_; }
 
   /// Attaches a receiver; returns its endpoint id (used as `from` when it sends).
   int attach(FrameReceiver* receiver);
@@ -106,6 +110,7 @@ class Bus {
   std::vector<FrameTap*> taps_;
   FrameFilter* filter_ = nullptr;
   BusStats stats_;
+  unsigned bit_rate_kbit_ = 0;
 };
 
 }  // namespace sim

@@ -113,6 +113,7 @@ void Emergency::clear_history() {
 }
 
 void Emergency::publish_history() {
+  if (node_.policy().emcy.history_depth == 0) return;  // the device keeps 0x1003 itself
   auto& od = node_.od();
   auto* obj = od.object(kErrorHistory);
   if (!obj) return;

@@ -65,24 +65,10 @@ void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
       if (!config) switch_selective(cs, u32(d + 1));
       break;
     case 0x11:  // configure node-ID
-      if (!config) break;
-      if ((d[1] >= 1 && d[1] <= 127) || d[1] == Node::kUnconfigured) {
-        pending_node_id_ = d[1];
-        node_.set_pending_node_id(d[1]);
-        stored_since_configure_ = false;
-        reply({0x11, 0x00, 0x00});
-      } else {
-        reply({0x11, 0x01, 0x00});
-      }
+      if (config) reply({0x11, configure_node_id(d[1]), 0x00});
       break;
     case 0x13:  // configure bit timing
-      if (!config) break;
-      if (d[1] == 0 && d[2] < policy_.bit_rates.size() && policy_.bit_rates.test(d[2])) {
-        pending_bit_rate_ = d[2];
-        reply({0x13, 0x00, 0x00});
-      } else {
-        reply({0x13, 0x01, 0x00});
-      }
+      if (config) reply({0x13, d[1] == 0 ? configure_bit_rate(d[2]) : std::uint8_t{0x01}, 0x00});
       break;
     case 0x15:  // activate bit timing: silent for the delay, switch, silent for the delay again
       if (!config || !policy_.activate_bit_timing) break;
@@ -94,20 +80,14 @@ void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
         node_.go_silent_until(resume_at_);
       }
       break;
-    case 0x17: {  // store configuration
+    case 0x17:  // store configuration
       if (!config) break;
-      auto& nv = node_.store().memory();
-      nv.put(kNvIndex, 1, ParameterStore::Value{false, {pending_node_id_}});
-      nv.put(kNvIndex, 2, ParameterStore::Value{false, {pending_bit_rate_}});
-      std::string error;
-      if (nv.save(error)) {
-        stored_since_configure_ = true;
+      if (store_configuration()) {
         reply({0x17, 0x00, 0x00});
       } else {
-        reply({0x17, 0xFF, 0x02});
+        reply({0x17, policy_.store_error_code, policy_.store_error_specific});
       }
       break;
-    }
     case 0x5A: case 0x5B: case 0x5C: case 0x5D:
       if (config || policy_.inquire_in_waiting) {
         const std::uint32_t v = identity(cs - 0x5A + 1);
@@ -127,6 +107,32 @@ void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
       break;
     default: break;  // unknown LSS services are ignored (CiA 305)
   }
+}
+
+std::uint8_t LssSlave::configure_node_id(std::uint8_t id) {
+  const bool valid = (id >= 1 && id <= 127) || (id == Node::kUnconfigured && policy_.accept_unconfigured_node_id);
+  if (!valid) return 0x01;
+  pending_node_id_ = id;
+  node_.set_pending_node_id(id);
+  stored_since_configure_ = false;
+  return 0x00;
+}
+
+std::uint8_t LssSlave::configure_bit_rate(std::uint8_t table_index) {
+  if (table_index >= policy_.bit_rates.size() || !policy_.bit_rates.test(table_index)) return 0x01;
+  pending_bit_rate_ = table_index;
+  return 0x00;
+}
+
+bool LssSlave::store_configuration() {
+  if (node_.store().failing()) return false;
+  auto& nv = node_.store().memory();
+  nv.put(kNvIndex, 1, ParameterStore::Value{false, {pending_node_id_}});
+  nv.put(kNvIndex, 2, ParameterStore::Value{false, {pending_bit_rate_}});
+  std::string error;
+  if (!nv.save(error)) return false;
+  stored_since_configure_ = true;
+  return true;
 }
 
 void LssSlave::switch_global(std::uint8_t mode) {

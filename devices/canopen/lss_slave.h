@@ -5,6 +5,7 @@
 
 #include <bitset>
 #include <cstdint>
+#include <optional>
 
 #include "sim/can_frame.h"
 #include "sim/time.h"
@@ -30,6 +31,15 @@ struct LssPolicy {
   std::bitset<10> bit_rates = default_bit_rates();
   /// Short frames (DLC < 8) read with missing bytes as 0 (else ignored).
   bool pad_short_frames = true;
+  /// "Configure node-ID" accepts 0xFF (back to unconfigured, CiA 305); false: only 1..127.
+  bool accept_unconfigured_node_id = true;
+  /// Error code / specific error answered when "store configuration" fails.
+  std::uint8_t store_error_code = 0xFF;
+  std::uint8_t store_error_specific = 0x02;
+  /// Bit-timing table index meaning "automatic bit-rate detection" (e.g. 9 on devices that
+  /// list "auto" in their table); none by default. A node whose active rate is this index
+  /// stays passive after power-on until it has seen another node's frame (see Node).
+  std::optional<std::uint8_t> automatic_bit_rate_index;
 
   static std::bitset<10> default_bit_rates() {
     std::bitset<10> b;
@@ -55,6 +65,15 @@ class LssSlave {
   void power_on();
   void on_frame(const sim::CanFrame& frame, sim::Time now);
   void process(sim::Time now);
+
+  // The configuration services without the protocol, for devices that also expose node-ID and
+  // bit rate as objects (the same non-volatile cells as LSS). Return the CiA 305 error code.
+  /// Sets the pending node-ID (active after the next communication reset); 0 ok, 1 out of range.
+  std::uint8_t configure_node_id(std::uint8_t id);
+  /// Sets the pending bit-rate table index; 0 ok, 1 not supported.
+  std::uint8_t configure_bit_rate(std::uint8_t table_index);
+  /// Stores pending node-ID and bit rate in non-volatile memory; true on success.
+  bool store_configuration();
 
   State state() const { return state_; }
   std::uint8_t pending_node_id() const { return pending_node_id_; }

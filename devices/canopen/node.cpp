@@ -49,8 +49,21 @@ void Node::attach(sim::Bus& bus) {
   endpoint_ = bus.attach(this);
 }
 
+unsigned Node::bit_rate_kbit() const {
+  if (!lss_) return 0;
+  const auto& automatic = lss_->policy().automatic_bit_rate_index;
+  if (automatic && lss_->active_bit_rate() == *automatic) return detected_kbit_;
+  return lss_bit_rate_kbit(lss_->active_bit_rate());
+}
+
+bool Node::on_bus_rate() const {
+  if (!bus_ || bus_->bit_rate_kbit() == 0) return true;
+  const unsigned own = bit_rate_kbit();
+  return own == 0 || own == bus_->bit_rate_kbit();
+}
+
 void Node::send(const sim::CanFrame& frame) {
-  if (!powered_ || silent() || !bus_) return;
+  if (!powered_ || silent() || bus_off_ || detecting_bit_rate_ || !bus_ || !on_bus_rate()) return;
   ++stats_.tx_frames;
   bus_->send(endpoint_, frame, now_);
 }
@@ -64,7 +77,14 @@ void Node::power_on(sim::Time now) {
   nmt_state_ = NmtState::Initialising;
   std::string error;
   if (!store_->power_on(error)) sim::log(sim::LogLevel::Error, "node {}: {}; using defaults", name_, error);
-  if (lss_) lss_->power_on();
+  bus_off_ = false;
+  detecting_bit_rate_ = false;
+  detected_kbit_ = 0;
+  if (lss_) {
+    lss_->power_on();
+    const auto& automatic = lss_->policy().automatic_bit_rate_index;
+    detecting_bit_rate_ = automatic && lss_->active_bit_rate() == *automatic;
+  }
   reset_application();
   reset_communication();
   boot_due_ = now + policy_.nmt.boot_delay;
@@ -189,7 +209,14 @@ void Node::rebuild_dispatch() {
 void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
   if (!powered_) return;
   now_ = now;
-  if (silent()) return;
+  if (silent() || bus_off_ || !on_bus_rate()) return;
+  if (detecting_bit_rate_) {
+    // The frame only serves to measure the bit rate (it is not processed); boot-up follows.
+    detecting_bit_rate_ = false;
+    detected_kbit_ = bus_ ? bus_->bit_rate_kbit() : 0;
+    boot_due_ = now + policy_.nmt.boot_delay;
+    return;
+  }
   ++stats_.rx_frames;
   RouteEntry route;
   if (!frame.extended) {
@@ -223,7 +250,7 @@ void Node::step(sim::Time now, sim::Duration dt) {
   if (!powered_) return;
   now_ = now;
   if (lss_) lss_->process(now);  // runs while silent: it ends an "activate bit timing" pause
-  if (silent()) return;
+  if (silent() || detecting_bit_rate_) return;
   if (boot_pending_ && now >= boot_due_) send_boot_up();
   if (boot_pending_ || nmt_state_ == NmtState::Initialising) return;
   sdo_->process(now);

@@ -85,6 +85,14 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   void execute_nmt(NmtCommand command);
   /// Changes the NMT state directly (e.g. error behaviour 0x1029 → Pre-operational).
   void set_nmt_state(NmtState state);
+  /// Bus-off (CAN controller fault): no frame in or out, the device keeps running.
+  void set_bus_off(bool off) { bus_off_ = off; }
+  bool bus_off() const { return bus_off_; }
+  /// Waiting for automatic bit-rate detection (LssPolicy::automatic_bit_rate_index).
+  bool detecting_bit_rate() const { return detecting_bit_rate_; }
+  /// The bit rate the node runs at in kbit/s: the LSS active rate, the detected rate, or 0
+  /// when unknown (no LSS, or still detecting on a bus without a rate).
+  unsigned bit_rate_kbit() const;
   /// No frame in or out until `until` (e.g. while "saving to EEPROM").
   void go_silent_until(sim::Time until) { silent_until_ = until; }
   bool silent() const { return now_ < silent_until_; }
@@ -119,6 +127,7 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   void reset_application();
   void reset_communication();
   void send_boot_up();
+  bool on_bus_rate() const;
 
   std::string name_;
   ObjectDictionary od_;
@@ -131,6 +140,9 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   sim::Time boot_due_{};
   sim::Time now_{};
   sim::Time silent_until_{};
+  bool bus_off_ = false;
+  bool detecting_bit_rate_ = false;
+  unsigned detected_kbit_ = 0;
 
   sim::Bus* bus_ = nullptr;
   int endpoint_ = -1;

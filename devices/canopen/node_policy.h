@@ -24,6 +24,9 @@ struct SdoPolicy {
     ExcessMustBeZero,  ///< longer accepted if the extra bytes are 0 / a sign extension; shorter extended
   } size_mode = SizeMode::Strict;
   SdoAbort unknown_command = SdoAbort::InvalidCommand;
+  /// With SizeMode::Strict: the abort for a length that does not match a fixed-size object
+  /// (None = CiA 301's 0x06070012 too long / 0x06070013 too short; some devices send 0x06070010).
+  SdoAbort length_mismatch = SdoAbort::None;
   sim::Duration timeout = sim::milliseconds(1000);  ///< segmented transfer idle limit; 0 = none
   bool segmented_download = true;
   /// A segmented transfer whose total differs from the object size (numeric types).
@@ -88,6 +91,8 @@ struct PdoPolicy {
   /// A write to a TPDO's event timer (sub 5) restarts it: the next timer-driven frame follows one
   /// new period after the write. false: the running period ends as scheduled.
   bool event_timer_restart_on_write = false;
+  /// Type 255 with event timer 0 means "PDO off" (some vendors' tables): nothing is sent.
+  bool type255_off_without_timer = false;
   /// Remote request whose DLC differs from the TPDO length.
   enum class RtrDlcMismatch : std::uint8_t { Answer, EmptyFrame, Ignore } rtr_dlc_mismatch = RtrDlcMismatch::Answer;
   /// RPDO shorter than its mapping: EMCY 0x8210 (CiA 301) or silently ignored. Longer: 0x8220.
@@ -137,6 +142,10 @@ struct StorePolicy {
   } restore = Restore::EraseStored;
   /// Time during which the node is silent while saving (frames in and out dropped).
   sim::Duration busy_time{0};
+  /// The same for a successful restore (0x1011).
+  sim::Duration restore_busy_time{0};
+  /// Abort code when the non-volatile memory fails (some manuals print another value).
+  SdoAbort hardware_error = SdoAbort::HardwareError;
   /// File holding this node's stored parameters ("" = RAM only: lost at power-off).
   std::string path;
   /// Storing a node-ID-relative entry (COB-IDs) that still has its default keeps it relative,

@@ -290,7 +290,7 @@ void PdoService::transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim:
   t.last_sent = data;
   t.sent_once = true;
   t.event_pending = false;
-  t.inhibit_until = now + sim::microseconds(static_cast<std::int64_t>(inhibit_100us(t)) * 100);
+  t.inhibit_until = now + std::max(sim::microseconds(static_cast<std::int64_t>(inhibit_100us(t)) * 100), t.min_spacing);
   const auto et = event_timer_ms(t);
   if (et != 0) t.next_timer = now + sim::milliseconds(et);
 }
@@ -298,6 +298,10 @@ void PdoService::transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim:
 void PdoService::try_send_event(Tpdo& t, sim::Time now) {
   if (!pdo_allowed(node_.nmt_state()) || !t.valid || t.mapping.length == 0) return;
   if (!t.event_pending || now < t.inhibit_until) return;
+  if (t.type == 255 && node_.policy().pdo.type255_off_without_timer && event_timer_ms(t) == 0) {
+    t.event_pending = false;
+    return;
+  }
   std::array<std::uint8_t, 8> data{};
   sample(t, data);
   transmit(t, data, now);
@@ -339,6 +343,19 @@ void PdoService::request_tpdo(int number) {
     t.event_pending = true;
     if (t.type >= 254) try_send_event(t, node_.now());
   }
+}
+
+void PdoService::restart_event_timer(int number) {
+  for (auto& t : tpdos_) {
+    if (t.number != number) continue;
+    const auto et = event_timer_ms(t);
+    t.next_timer = node_.now() + sim::milliseconds(et);
+  }
+}
+
+void PdoService::set_min_spacing(int number, sim::Duration spacing) {
+  for (auto& t : tpdos_)
+    if (t.number == number) t.min_spacing = spacing;
 }
 
 void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time now) {

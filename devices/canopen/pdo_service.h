@@ -49,6 +49,11 @@ class PdoService {
   /// the others still read back as valid. Default: active.
   void set_active(PdoDirection dir, int number, bool active);
   bool active(PdoDirection dir, int number) const;
+  /// Restarts TPDO n's event timer from now (e.g. a device whose timer object was rewritten).
+  void restart_event_timer(int number);
+  /// Minimum spacing the device itself imposes on TPDO n, on top of its inhibit time (e.g. a
+  /// profile's cyclic timer that paces change-driven transmission). 0 = none.
+  void set_min_spacing(int number, sim::Duration spacing);
   void process(sim::Time now);
 
   /// Current mapped length of TPDO/RPDO n (for tests and tools).
@@ -81,6 +86,7 @@ class PdoService {
     sim::Time inhibit_until{};
     sim::Time next_timer{};
     std::array<std::uint8_t, 8> last_sent{};
+    sim::Duration min_spacing{0};
     std::array<std::uint8_t, 8> sampled{};   ///< type 252: sampled at SYNC
     bool has_sample = false;
   };

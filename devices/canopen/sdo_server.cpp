@@ -94,13 +94,14 @@ SdoAbort SdoServer::fit_size(const OdEntry& e, Bytes& data, bool size_indicated)
   }
   using Mode = SdoPolicy::SizeMode;
   const Mode mode = node_.policy().sdo.size_mode;
+  const SdoAbort mismatch = node_.policy().sdo.length_mismatch;
   if (data.size() < fixed) {
-    if (mode == Mode::Strict) return SdoAbort::LengthTooLow;
+    if (mode == Mode::Strict) return mismatch != SdoAbort::None ? mismatch : SdoAbort::LengthTooLow;
     data = resize_value(e.type, data, fixed);
     return SdoAbort::None;
   }
   // Longer than the object.
-  if (mode == Mode::Strict) return SdoAbort::LengthTooHigh;
+  if (mode == Mode::Strict) return mismatch != SdoAbort::None ? mismatch : SdoAbort::LengthTooHigh;
   if (mode == Mode::ExcessMustBeZero) {
     const bool negative = is_signed_integer(e.type) && (data[fixed - 1] & 0x80);
     const std::uint8_t fill = negative ? 0xFF : 0x00;
@@ -142,6 +143,8 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
   const std::size_t fixed = type_size(e->type);
   if (size_indicated && fixed != 0 && expected_size_ != fixed &&
       node_.policy().sdo.size_mode == SdoPolicy::SizeMode::Strict) {
+    const SdoAbort mismatch = node_.policy().sdo.length_mismatch;
+    if (mismatch != SdoAbort::None) return abort(index, sub, mismatch);
     return abort(index, sub, expected_size_ > fixed ? SdoAbort::LengthTooHigh : SdoAbort::LengthTooLow);
   }
   if (size_indicated && fixed == 0 && e->max_length != 0 && expected_size_ > e->max_length) {

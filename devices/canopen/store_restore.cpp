@@ -81,7 +81,7 @@ void StoreRestore::load_area(std::uint16_t first, std::uint16_t last) {
 SdoAbort StoreRestore::save_group(std::uint8_t sub) {
   const auto ranges = group_ranges(sub);
   if (ranges.empty()) return SdoAbort::DataTransfer;
-  if (failing_) return SdoAbort::HardwareError;
+  if (failing_) return node_.policy().store.hardware_error;
   const bool freeze = node_.policy().store.freeze_node_relative;
   for (const auto& [first, last] : ranges) {
     for (auto it = node_.od().objects().lower_bound(first); it != node_.od().objects().end() && it->first <= last; ++it) {
@@ -105,7 +105,7 @@ SdoAbort StoreRestore::save_group(std::uint8_t sub) {
   std::string error;
   if (!store_.save(error)) {
     sim::log(sim::LogLevel::Error, "node {}: {}", node_.name(), error);
-    return SdoAbort::HardwareError;
+    return node_.policy().store.hardware_error;
   }
   const auto busy = node_.policy().store.busy_time;
   if (busy.count() > 0) node_.go_silent_until(node_.now() + busy);
@@ -115,23 +115,26 @@ SdoAbort StoreRestore::save_group(std::uint8_t sub) {
 SdoAbort StoreRestore::save_entry(std::uint16_t index, std::uint8_t sub) {
   const OdEntry* e = node_.od().entry(index, sub);
   if (!e) return SdoAbort::NoObject;
-  if (failing_) return SdoAbort::HardwareError;
+  if (failing_) return node_.policy().store.hardware_error;
   store_.put(index, sub, ParameterStore::Value{false, e->value});
   std::string error;
-  return store_.save(error) ? SdoAbort::None : SdoAbort::HardwareError;
+  return store_.save(error) ? SdoAbort::None : node_.policy().store.hardware_error;
 }
 
 SdoAbort StoreRestore::restore_group(std::uint8_t sub) {
   const auto ranges = group_ranges(sub);
   if (ranges.empty()) return SdoAbort::DataTransfer;
-  if (failing_) return SdoAbort::HardwareError;
+  if (failing_) return node_.policy().store.hardware_error;
   if (node_.policy().store.restore == StorePolicy::Restore::PendingUntilReset) {
     pending_restore_.insert(sub);
-    return SdoAbort::None;
+  } else {
+    for (const auto& [first, last] : ranges) store_.erase_range(first, last);
+    std::string error;
+    if (!store_.save(error)) return node_.policy().store.hardware_error;
   }
-  for (const auto& [first, last] : ranges) store_.erase_range(first, last);
-  std::string error;
-  return store_.save(error) ? SdoAbort::None : SdoAbort::HardwareError;
+  const auto busy = node_.policy().store.restore_busy_time;
+  if (busy.count() > 0) node_.go_silent_until(node_.now() + busy);
+  return SdoAbort::None;
 }
 
 }  // namespace canopen

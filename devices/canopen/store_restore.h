@@ -38,6 +38,7 @@ class StoreRestore {
   /// Injected failure of the non-volatile memory (fault injection): save/restore abort
   /// with 0x06060000.
   void set_failing(bool failing) { failing_ = failing; }
+  bool failing() const { return failing_; }
 
  private:
   using Ranges = std::vector<std::pair<std::uint16_t, std::uint16_t>>;

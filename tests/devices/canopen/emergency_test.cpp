@@ -80,3 +80,17 @@ TEST_F(EmcyTest, PresentErrorsHistoryMode) {
   EXPECT_EQ(h.read_u(0x1003, 0), 1u);
   EXPECT_EQ(h.read_u(0x1003, 1), 0x2000u);
 }
+
+TEST(EmcyHistoryOff, DepthZeroLeaves1003ToTheDevice) {
+  canopen::NodePolicy p;
+  p.emcy.history_depth = 0;
+  vtest::CanopenHarness h(vtest::make_generic_od(), p, 5);
+  h.power_on();
+  h.take();
+  h.node().od().set<std::uint8_t>(0x1003, 0, 3);  // the device's own bookkeeping
+  h.node().emergency().raise(0x5000, 0x01);
+  EXPECT_EQ(h.take(), Frames{Frame(0x85, {0x00, 0x50, 0x01, 0, 0, 0, 0, 0})});
+  h.node().emergency().reset_communication();
+  EXPECT_EQ(h.node().od().get<int>(0x1003, 0), 3);
+  EXPECT_EQ(h.node().od().get<std::uint32_t>(0x1003, 1), 0u);
+}

@@ -1,7 +1,12 @@
 // LSS slave (CiA 305), frame level: master 0x7E5 → slave 0x7E4.
 #include "devices/canopen/lss_slave.h"
+#include "devices/canopen/store_restore.h"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <string>
 
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
@@ -134,4 +139,38 @@ TEST_F(UnconfiguredLssTest, FastscanFindsTheSlave) {
   EXPECT_EQ(lss({0x51, 0x02, 0x00, 0x01, 0x00, 0, 2, 3}), Frames{reply({0x4F})});
   EXPECT_EQ(lss({0x51, 0xEE, 0xFF, 0xC0, 0x00, 0, 3, 0}), Frames{reply({0x4F})});
   EXPECT_EQ(h.node().lss()->state(), canopen::LssSlave::State::Configuration);
+}
+
+TEST_F(LssTest, NodeIdFFCanBeRefusedAndStoreFailureHasAConfigurableAnswer) {
+  h.node().lss()->policy().accept_unconfigured_node_id = false;
+  h.node().lss()->policy().store_error_code = 0x02;
+  h.node().lss()->policy().store_error_specific = 0x00;
+  lss({0x04, 0x01});
+  EXPECT_EQ(lss({0x11, 0xFF}), Frames{reply({0x11, 0x01, 0x00})});
+  EXPECT_EQ(lss({0x11, 0x7F}), Frames{reply({0x11, 0x00, 0x00})});
+  h.node().store().set_failing(true);
+  EXPECT_EQ(lss({0x17}), Frames{reply({0x17, 0x02, 0x00})});
+  h.node().store().set_failing(false);
+  EXPECT_EQ(lss({0x17}), Frames{reply({0x17, 0x00, 0x00})});
+}
+
+TEST(LssServices, ConfigurationServicesWithoutTheProtocol) {
+  canopen::NodePolicy policy;
+  policy.store.path = "/tmp/vplant-lss-services-" + std::to_string(::getpid());
+  vtest::CanopenHarness h(vtest::make_generic_od(), policy, 5);
+  h.node().enable_lss(canopen::LssPolicy{});
+  h.power_on();
+  auto& lss_slave = *h.node().lss();
+  EXPECT_EQ(lss_slave.configure_node_id(0), 0x01);
+  EXPECT_EQ(lss_slave.configure_node_id(9), 0x00);
+  EXPECT_EQ(lss_slave.configure_bit_rate(5), 0x01);  // reserved in the default table
+  EXPECT_EQ(lss_slave.configure_bit_rate(4), 0x00);
+  EXPECT_TRUE(lss_slave.store_configuration());
+  h.node().power_off();
+  h.node().set_pending_node_id(5);  // forget the RAM copy: the node-ID must come from the file
+  h.take();
+  h.power_on();
+  EXPECT_EQ(h.take(), Frames{Frame(0x709, {0x00})});
+  EXPECT_EQ(lss_slave.active_bit_rate(), 4);
+  std::remove(policy.store.path.c_str());
 }

@@ -216,3 +216,43 @@ TEST(PdoPolicyKnobs, EventTimerWriteRestartsThePeriod) {
     }
   }
 }
+
+TEST_F(PdoTest, Type255WithoutEventTimerCanMeanPdoOff) {
+  h.node().policy().pdo.type255_off_without_timer = true;
+  h.node().policy().pdo.send_async_on_operational = true;
+  operational();
+  h.node().od().set<std::uint16_t>(0x6000, 0, 0x0102);
+  h.run_ms(10);
+  EXPECT_TRUE(h.take().empty());  // type 255, event timer 0: off (no initial, no change frames)
+  h.nmt(0x80, 5);
+  ASSERT_EQ(h.write(0x1800, 5, 20, 2), 0u);
+  operational();
+  h.take();
+  h.run_ms(40);
+  EXPECT_EQ(h.take().size(), 2u);  // with a timer it runs (the knob does not touch timers)
+}
+
+TEST_F(PdoTest, MinimumSpacingPacesChangeDrivenTransmission) {
+  h.node().pdo().set_min_spacing(1, sim::milliseconds(10));
+  operational();
+  h.take();
+  for (int i = 0; i < 20; ++i) {
+    h.node().od().set<std::uint16_t>(0x6000, 0, static_cast<std::uint16_t>(i + 1));
+    h.run_ticks(1);
+  }
+  const auto times = h.take_times();
+  ASSERT_EQ(times.size(), 2u);  // changes every ms, at most one frame per 10 ms
+  EXPECT_GE(times[1] - times[0], sim::milliseconds(10));
+}
+
+TEST_F(PdoTest, RestartEventTimerCountsFromNow) {
+  ASSERT_EQ(h.write(0x1800, 5, 100, 2), 0u);
+  operational();
+  h.take();
+  h.run_ms(60);
+  h.node().pdo().restart_event_timer(1);
+  h.run_ms(99);
+  EXPECT_TRUE(h.take().empty());
+  h.run_ms(2);
+  EXPECT_EQ(h.take().size(), 1u);
+}

@@ -180,6 +180,13 @@ TEST_F(SdoServerTest, HiddenObjectsAnswer06020000BeforeAnyOtherCheck) {
   EXPECT_EQ(req({0x40, 0x03, 0x20, 0x00, 0, 0, 0, 0}), Frames{resp({0x43, 0x03, 0x20, 0x00, 0xEF, 0xBE, 0xAD, 0xDE})});
 }
 
+TEST_F(SdoServerTest, LengthMismatchAbortIsConfigurable) {
+  EXPECT_EQ(h.write(0x2000, 0, 7, 4), 0x06070012u);
+  h.node().policy().sdo.length_mismatch = canopen::SdoAbort::TypeMismatch;
+  EXPECT_EQ(h.write(0x2000, 0, 7, 4), 0x06070010u);
+  EXPECT_EQ(h.write(0x2003 + 3, 0, 7, 1), 0x06070010u);  // 0x2006 is U64: too short
+}
+
 namespace {
 // The generic node plus a data type entry: UNSIGNED8 (0x0005) declared as a dummy type.
 canopen::ObjectDictionary od_with_type_definition() {

@@ -144,3 +144,21 @@ TEST(ParameterStore, MalformedFileIsReportedWithLine) {
   EXPECT_TRUE(store.values().empty());
   std::remove(path.c_str());
 }
+
+TEST(StoreRestore, RestoreCanBeSilentAndTheHardwareAbortIsConfigurable) {
+  canopen::NodePolicy p;
+  p.store.restore_busy_time = sim::milliseconds(3000);
+  p.store.hardware_error = static_cast<canopen::SdoAbort>(0x06000006);
+  vtest::CanopenHarness h(vtest::make_generic_od(), p, 5);
+  h.power_on();
+  h.take();
+  h.send(0x605, {0x23, 0x11, 0x10, 0x01, 0x6C, 0x6F, 0x61, 0x64});
+  EXPECT_TRUE(h.take().empty());
+  h.send(Frame::remote(0x705, 1));
+  h.run_ms(2990);
+  EXPECT_TRUE(h.take().empty());
+  h.run_ms(20);
+  EXPECT_EQ(h.take(), Frames{Frame(0x585, {0x60, 0x11, 0x10, 0x01, 0, 0, 0, 0})});
+  h.node().store().set_failing(true);
+  EXPECT_EQ(h.write(0x1010, 1, kSave, 4), 0x06000006u);
+}
