@@ -101,6 +101,16 @@ std::vector<NodeSpec> read_nodes(const YAML::Node& seq, const std::string& file,
       }
       pr.finish();
     }
+    if (auto in = r.get("inputs")) {
+      MapReader ir(in, file, "inputs of node '" + n.name + "'");
+      for (const auto& kv : in) {
+        const auto key = kv.first.Scalar();
+        ir.get(key);
+        n.inputs.emplace_back(key, read_number(kv.second, file, "input '" + key + "'"));
+        n.input_marks.push_back(mark_of(kv.first, file));
+      }
+      ir.finish();
+    }
     if (auto st = r.get("store")) n.store = resolve_input(dir, read_string(st, file, "store"));
     r.finish();
     nodes.push_back(std::move(n));

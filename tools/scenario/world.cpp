@@ -126,6 +126,10 @@ void World::build_nodes(const Environment& env) {
       }
       node.policy().store.preset.push_back({o.index, o.sub, bytes});
     }
+    for (std::size_t i = 0; i < spec.inputs.size(); ++i) {
+      if (auto err = inst.device->set_input(spec.inputs[i].first, spec.inputs[i].second); !err.empty())
+        throw LoadError(spec.input_marks[i], "node '" + spec.name + "': " + err);
+    }
     node.attach(*buses_[static_cast<std::size_t>(inst.bus)]);
     inst.ports = inst.device->ports();
     nodes_.push_back(std::move(inst));
