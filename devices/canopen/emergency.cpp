@@ -15,6 +15,12 @@ constexpr std::uint16_t kInhibitEmcy = 0x1015;
 
 Emergency::Emergency(Node& node) : node_(node) {}
 
+bool Emergency::may_send() const {
+  const NmtState state = node_.nmt_state();
+  if (!emcy_allowed(state)) return false;
+  return state != NmtState::PreOperational || node_.policy().emcy.send_in_preoperational;
+}
+
 void Emergency::bind_objects() {
   auto& od = node_.od();
   const auto& policy = node_.policy().emcy;
@@ -130,7 +136,7 @@ void Emergency::send_frame(std::uint16_t code, std::uint8_t error_register, Info
   const auto* cob = node_.od().entry(kCobIdEmcy, 0);
   const std::uint32_t cob_id = cob ? cob->as<std::uint32_t>() : 0x80u + node_.node_id();
   if (cob_id & 0x80000000u) return;  // EMCY disabled
-  if (!emcy_allowed(node_.nmt_state())) return;
+  if (!may_send()) return;
   sim::CanFrame f;
   f.extended = (cob_id & 0x20000000u) != 0;
   f.id = cob_id & (f.extended ? 0x1FFFFFFFu : 0x7FFu);
@@ -145,7 +151,7 @@ void Emergency::enqueue(std::uint16_t code, const Info& info) { send_frame(code,
 
 void Emergency::process(sim::Time now) {
   while (!queue_.empty() && now >= next_allowed_) {
-    if (!emcy_allowed(node_.nmt_state())) {
+    if (!may_send()) {
       queue_.clear();  // EMCYs are never sent late from Stopped
       return;
     }

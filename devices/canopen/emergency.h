@@ -55,6 +55,7 @@ class Emergency {
     std::uint16_t code;
     std::uint8_t bits;
   };
+  bool may_send() const;  ///< the NMT state (and policy) allows EMCY frames now
   void record(std::uint16_t code, const Info& info);
   void enqueue(std::uint16_t code, const Info& info);
   void update_register();

@@ -66,6 +66,9 @@ struct EmcyPolicy {
   std::uint8_t history_depth = 8;  ///< 0 = no 0x1003 handling by the stack
   /// Send the "error reset / no error" EMCY (code 0x0000) when the last active error clears.
   bool send_no_error = true;
+  /// Send EMCYs in Pre-operational (CiA 301). false: only in Operational, for manuals whose
+  /// Pre-operational state offers "only NMT, node guarding and SDO"; errors are still recorded.
+  bool send_in_preoperational = true;
   /// Record events that occur in Stopped (their EMCY is never sent).
   bool record_when_not_sent = true;
   bool clear_history_on_reset_communication = true;

@@ -57,12 +57,15 @@ int compare_values(DataType type, std::span<const std::uint8_t> a, std::span<con
 
 Bytes resize_value(DataType type, std::span<const std::uint8_t> bytes, std::size_t size) {
   Bytes out(size, 0);
-  const std::size_t n = std::min(size, bytes.size());
-  std::copy_n(bytes.begin(), n, out.begin());
-  if (size > bytes.size() && is_signed_integer(type) && !bytes.empty() && (bytes.back() & 0x80)) {
-    std::fill(out.begin() + static_cast<std::ptrdiff_t>(bytes.size()), out.end(), 0xFF);
-  }
+  resize_value_into(type, bytes, out);
   return out;
+}
+
+void resize_value_into(DataType type, std::span<const std::uint8_t> bytes, std::span<std::uint8_t> out) {
+  const std::size_t n = std::min(out.size(), bytes.size());
+  std::copy_n(bytes.begin(), n, out.begin());
+  const bool negative = is_signed_integer(type) && !bytes.empty() && (bytes.back() & 0x80);
+  std::fill(out.begin() + static_cast<std::ptrdiff_t>(n), out.end(), negative ? 0xFF : 0x00);
 }
 
 // ---- OdEntry -----------------------------------------------------------------------------------

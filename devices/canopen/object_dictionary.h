@@ -111,6 +111,8 @@ void encode_unsigned(std::uint64_t v, std::span<std::uint8_t> out);
 int compare_values(DataType type, std::span<const std::uint8_t> a, std::span<const std::uint8_t> b);
 /// Widens (sign- or zero-extends) or truncates little-endian bytes of `type` to `size` bytes.
 Bytes resize_value(DataType type, std::span<const std::uint8_t> bytes, std::size_t size);
+/// The same into `out` (out.size() bytes), without allocating: for the per-frame paths.
+void resize_value_into(DataType type, std::span<const std::uint8_t> bytes, std::span<std::uint8_t> out);
 
 class ObjectDictionary {
  public:

@@ -245,6 +245,11 @@ void PdoService::apply_rpdo(Rpdo& r) {
       const std::span<const std::uint8_t> slot(r.buffer.data() + pos, m.bytes);
       if (m.bytes == m.entry->size()) {
         (void)od.write(*m.entry, slot, Origin::Pdo);  // a refused PDO value is dropped silently
+      } else if (m.entry->size() <= 8) {
+        std::array<std::uint8_t, 8> widened{};  // width conversion without allocating per frame
+        const std::span<std::uint8_t> out(widened.data(), m.entry->size());
+        resize_value_into(m.entry->type, slot, out);
+        (void)od.write(*m.entry, out, Origin::Pdo);
       } else {
         const Bytes widened = resize_value(m.entry->type, slot, m.entry->size());
         (void)od.write(*m.entry, widened, Origin::Pdo);

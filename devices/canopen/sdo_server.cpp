@@ -11,6 +11,18 @@ constexpr std::uint16_t kSdoServerParameter = 0x1200;
 constexpr std::size_t kBufferReserve = 1024;
 
 std::uint16_t index_of(const std::uint8_t* req) { return static_cast<std::uint16_t>(req[1] | req[2] << 8); }
+
+/// Widens or truncates a numeric value in the transfer buffer (its capacity is reserved: no
+/// allocation per request).
+void resize_in_place(DataType type, Bytes& data, std::size_t size) {
+  std::array<std::uint8_t, 8> tmp{};
+  if (size > tmp.size()) {
+    data = resize_value(type, data, size);
+    return;
+  }
+  resize_value_into(type, data, std::span<std::uint8_t>(tmp.data(), size));
+  data.assign(tmp.begin(), tmp.begin() + static_cast<std::ptrdiff_t>(size));
+}
 }  // namespace
 
 SdoServer::SdoServer(Node& node) : node_(node) { buffer_.reserve(kBufferReserve); }
@@ -89,7 +101,7 @@ SdoAbort SdoServer::fit_size(const OdEntry& e, Bytes& data, bool size_indicated)
   }
   if (data.size() == fixed) return SdoAbort::None;
   if (!size_indicated) {
-    data = resize_value(e.type, data, fixed);
+    resize_in_place(e.type, data, fixed);
     return SdoAbort::None;
   }
   using Mode = SdoPolicy::SizeMode;
@@ -97,7 +109,7 @@ SdoAbort SdoServer::fit_size(const OdEntry& e, Bytes& data, bool size_indicated)
   const SdoAbort mismatch = node_.policy().sdo.length_mismatch;
   if (data.size() < fixed) {
     if (mode == Mode::Strict) return mismatch != SdoAbort::None ? mismatch : SdoAbort::LengthTooLow;
-    data = resize_value(e.type, data, fixed);
+    resize_in_place(e.type, data, fixed);
     return SdoAbort::None;
   }
   // Longer than the object.

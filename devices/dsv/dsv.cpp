@@ -53,6 +53,7 @@ Dsv::Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
   pdo.type255.after_rpdo = false;
   pdo.width_conversion = options_.m4_tpdo_six_bytes;
   pdo.parameters_preop_only = false;  // "can be changed in any way required by the user"
+  pdo.dummy_mapping = false;          // the mapping is fixed
 
   dsp408::ChannelObjects objects = dsp408::ChannelObjects::for_channel(1, false);
   objects.local_locks_modes = true;
@@ -241,8 +242,8 @@ void Dsv::process(sim::Time now, sim::Duration dt) {
   chain_->set_driver_ok(!faults_.solenoid_a_open, !faults_.solenoid_b_open);
   const double seconds = sim::seconds(dt);
   chain_->process(now, seconds);
-  solenoid_a_ = chain_->solenoid_a();
-  solenoid_b_ = chain_->solenoid_b();
+  solenoid_a_ = outputs_allowed() ? chain_->solenoid_a() : 0.0;
+  solenoid_b_ = outputs_allowed() ? chain_->solenoid_b() : 0.0;
   const double target = options_.ambient_temperature + options_.thermal_gain * (solenoid_a_ * solenoid_a_ + solenoid_b_ * solenoid_b_);
   temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
   dsp408::put_rounded(*temperature_entry_, temperature_, -55, 150);

@@ -20,6 +20,7 @@ std::string eds(const std::string& variant) {
   info.baud_rates_kbit = {10, 20, 50, 100, 125, 250, 500, 1000};
   info.simple_boot_up_slave = true;
   info.lss_supported = false;
+  info.dummy_usage = 0;  // the mapping is fixed: nothing can map a dummy
   return canopen::write_eds(build_object_dictionary(o), info);
 }
 

@@ -35,7 +35,7 @@ Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
   auto& policy = n.policy().pdo;
   // Dynamic mapping (§5.4.16): PDO parameters only in Pre-operational (§2.5), mapping only while
   // the PDO is disabled and sub 0 is 0; COB-IDs may change at any time there.
-  policy.parameters_preop_only = true;
+  policy.parameters_preop_only = options_.pdo_params_preop_only;
   policy.cobid_change_requires_invalid = false;
   policy.mapping_requires_invalid = true;
   policy.mapping_entry_requires_sub0_zero = true;
@@ -71,7 +71,7 @@ void Md2::regenerate_pdos() {
   auto& od = node_owner_->od();
   for (int n = 1; n <= 4 && n <= options_.channels; ++n) {
     const std::int8_t m = channels_[static_cast<std::size_t>(n - 1)]->control_mode();
-    const auto rpdo = default_rpdo_mapping(n, m), tpdo = default_tpdo_mapping(n, m);
+    const auto rpdo = default_rpdo_mapping(options_, n, m), tpdo = default_tpdo_mapping(options_, n, m);
     auto write = [&od](std::uint16_t index, const std::vector<std::uint32_t>& mapping) {
       od.set<std::uint8_t>(index, 0, static_cast<std::uint8_t>(mapping.size()));
       for (std::uint8_t sub = 1; sub <= 4; ++sub) {
@@ -102,7 +102,10 @@ void Md2::process(sim::Time now, sim::Duration dt) {
   detect_errors();
   channels_[0]->set_driver_ok(!faults_.solenoid_a_open, !faults_.solenoid_b_open);
   const double seconds = sim::seconds(dt);
-  for (auto& ch : channels_) ch->process(now, seconds);
+  for (auto& ch : channels_) {
+    ch->process(now, seconds);
+    if (!outputs_allowed()) ch->solenoid_a = ch->solenoid_b = 0;
+  }
   // Temperature: first-order approach (τ = 60 s) to ambient + k·(I_A² + I_B²) of the drivers.
   const auto& ch1 = *channels_[0];
   const double target = options_.ambient_temperature +

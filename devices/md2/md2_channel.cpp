@@ -121,7 +121,7 @@ double Md2Channel::setpoint_raw() const {
     case mode::kVpoc: e = setpoints_[0]; break;
     case mode::kVprcOpen:
     case mode::kVprcClosed:
-    case mode::kVprcClosed2: e = setpoints_[1]; break;
+    case mode::kVprcClosed2: e = o_.vpoc_mapping_literal ? setpoints_[0] : setpoints_[1]; break;
     case mode::kDcol: e = setpoints_[2]; break;
     case mode::kDsc: e = setpoints_[3]; break;
     case mode::kDpc: e = setpoints_[4]; break;

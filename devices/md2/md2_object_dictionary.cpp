@@ -113,30 +113,30 @@ void add_channel(ObjectDictionary& od, const Md2Options& o, int c) {
 
 }  // namespace
 
-std::vector<std::uint32_t> default_rpdo_mapping(int channel, std::int8_t m) {
+std::vector<std::uint32_t> default_rpdo_mapping(const Md2Options& o, int channel, std::int8_t m) {
   const auto ix = ChannelIndices::of(channel);
-  const std::uint16_t sp = ix.setpoint_for(m);
+  const std::uint16_t sp = o.vpoc_mapping_literal && is_16_bit(m) ? ix.vpoc_setpoint() : ix.setpoint_for(m);
   if (sp == 0) return {entry(ix.control_word(), 0, 16)};  // channel 4 has no n-point set point
   return {entry(ix.control_word(), 0, 16), entry(sp, ix.setpoint_sub(m), is_16_bit(m) ? 16 : 32)};
 }
 
-std::vector<std::uint32_t> default_tpdo_mapping(int channel, std::int8_t m) {
+std::vector<std::uint32_t> default_tpdo_mapping(const Md2Options& o, int channel, std::int8_t m) {
   const auto ix = ChannelIndices::of(channel);
   const std::uint16_t actual = ix.actual_for(m);
-  if (actual == 0) return {entry(ix.status_word(), 0, 16)};
+  if (actual == 0 || !o.tpdo_actual_value) return {entry(ix.status_word(), 0, 16)};
   return {entry(ix.status_word(), 0, 16), entry(actual, 1, is_16_bit(m) ? 16 : 32)};
 }
 
 ObjectDictionary build_object_dictionary(const Md2Options& o) {
   ObjectDictionary od;
-  canopen::add_communication_objects(od, wandfluh::communication_profile(kDeviceType, o.common));
+  canopen::add_communication_objects(od, wandfluh::communication_profile(o.device_type, o.common));
   for (int n = 1; n <= kPdoCount; ++n) {
     const bool has_channel = n <= 4 && n <= o.channels;
     const auto base = static_cast<std::uint32_t>(0x100 * (n - 1));
     add_pdo(od, true, n, has_channel ? 0x200 + base : 0x80000000u,
-            has_channel ? default_rpdo_mapping(n, o.delivery_control_mode) : std::vector<std::uint32_t>{});
+            has_channel ? default_rpdo_mapping(o, n, o.delivery_control_mode) : std::vector<std::uint32_t>{});
     add_pdo(od, false, n, has_channel ? 0x180 + base : 0x80000000u,
-            has_channel ? default_tpdo_mapping(n, o.delivery_control_mode) : std::vector<std::uint32_t>{});
+            has_channel ? default_tpdo_mapping(o, n, o.delivery_control_mode) : std::vector<std::uint32_t>{});
   }
   wandfluh::mark_saved_communication_entries(od, o.common.save_all_pdo_parameters);
 

@@ -19,7 +19,7 @@ canopen::ObjectDictionary build_object_dictionary(const Md2Options& o);
 /// Default mapping entries of PDO n (1..4, channel n) for control mode `m` (§2.7.3 of the
 /// digest): RPDO = control word + command value, TPDO = status word (+ actual value in the
 /// closed-loop modes with an actual-value object).
-std::vector<std::uint32_t> default_rpdo_mapping(int channel, std::int8_t m);
-std::vector<std::uint32_t> default_tpdo_mapping(int channel, std::int8_t m);
+std::vector<std::uint32_t> default_rpdo_mapping(const Md2Options& o, int channel, std::int8_t m);
+std::vector<std::uint32_t> default_tpdo_mapping(const Md2Options& o, int channel, std::int8_t m);
 
 }  // namespace md2

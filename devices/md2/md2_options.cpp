@@ -67,6 +67,10 @@ std::string Md2Options::read(const devices::DeviceOptions& options) {
   ambient_temperature = s.number("t_ambient", ambient_temperature);
   thermal_gain = s.number("k_thermal", thermal_gain);
   capability = static_cast<std::uint32_t>(s.integer("capability", 0));
+  device_type = static_cast<std::uint32_t>(s.integer("device_type", 0x10000198));
+  vpoc_mapping_literal = s.flag("vpoc_mapping_literal", false);
+  tpdo_actual_value = s.flag("tpdo_actual_value", true);
+  pdo_params_preop_only = s.flag("pdo_params_preop_only", true);
   if (!find_unit(unit_name, unit)) return "setting 'unit': unknown unit '" + unit_name + "'";
   setpoint_max = s.number("setpoint_max", unit.max);
   if (auto e = s.finish(); !e.empty()) return e;

@@ -52,6 +52,10 @@ struct Md2Options {
   double ambient_temperature = 25; ///< °C
   double thermal_gain = 10;        ///< °C per A² (both solenoids)
   std::uint32_t capability = 0;    ///< 0x605F; 0 = the variant's default
+  std::uint32_t device_type = 0x10000198;  ///< 0x1000 as printed (the text's bit 31 would give 0x80000198)
+  bool vpoc_mapping_literal = false;  ///< RPDOs map "command value VPOC" (0x6300) in modes 3, 4, −5 too
+  bool tpdo_actual_value = true;      ///< closed-loop default TPDO carries the actual value
+  bool pdo_params_preop_only = true;  ///< PDO parameters refused (0x08000022) in Operational
 
   /// Reads `options`; returns an error message (empty on success).
   std::string read(const devices::DeviceOptions& options);

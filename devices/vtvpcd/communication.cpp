@@ -44,6 +44,7 @@ canopen::NodePolicy make_policy(const Settings& s) {
   p.emcy.history = canopen::EmcyPolicy::History::PresentErrors;
   p.emcy.history_depth = 4;
   p.emcy.send_no_error = true;
+  p.emcy.send_in_preoperational = s.emcy_in_preoperational;
   p.emcy.history_write_nonzero = SdoAbort::ValueTooHigh;
   p.emcy.history_read_beyond = SdoAbort::NoSubIndex;
 

@@ -127,6 +127,7 @@ const std::vector<Knob>& knobs() {
       {"boot_delay_ms", "300", integer(&Settings::boot_delay_ms, 0, 60000)},
       {"reset_boot_delay_ms", "20", integer(&Settings::reset_boot_delay_ms, 0, 100)},
       {"nmt_stop_supported", "true", boolean(&Settings::nmt_stop_supported)},
+      {"emcy_in_preoperational", "true", boolean(&Settings::emcy_in_preoperational)},
       {"sdo_size_mode", "lenient", choice(&Settings::sdo_size_strict, {{"lenient", false}, {"strict", true}})},
       {"sdo_range_mode", "none", choice(&Settings::sdo_range_strict, {{"none", false}, {"strict", true}})},
       {"expose_mapping_objects", "true", boolean(&Settings::expose_mapping_objects)},

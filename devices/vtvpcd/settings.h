@@ -56,6 +56,7 @@ struct Settings {
   int boot_delay_ms = 300;             ///< power-on -> boot-up frame [R]
   int reset_boot_delay_ms = 20;        ///< NMT 0x81/0x82 -> boot-up frame (<= 100 ms) [R]
   bool nmt_stop_supported = true;      ///< A4
+  bool emcy_in_preoperational = true;  ///< CiA 301; the manual lists only NMT, guarding, SDO for Pre-op
   bool sdo_size_strict = false;        ///< sdo_size_mode = lenient | strict (A14)
   bool sdo_range_strict = false;       ///< sdo_range_mode = none | strict (A15)
   bool expose_mapping_objects = true;  ///< A16

@@ -19,6 +19,8 @@ void CommonOptions::read(Settings& s) {
   rtr_mirror_dlc = s.flag("rtr_mirror_dlc", false);
   unknown_command_abort = static_cast<std::uint32_t>(s.integer("sdo_unknown_command_abort", 0x08000000));
   heartbeat_suspends_life_guarding = s.flag("heartbeat_suspends_life_guarding", true);
+  emcy_before_stop = s.flag("emcy_before_stop", false);
+  outputs_need_operational = s.flag("outputs_need_operational", false);
   device_version = s.text("device_version", device_version);
   serial_number = s.text("serial_number", serial_number);
   model_description = s.text("model_description", model_description);

@@ -34,6 +34,8 @@ struct CommonOptions {
   bool rtr_mirror_dlc = false;                      ///< rtr_mirror_dlc: answer a wrong-DLC RTR with data
   std::uint32_t unknown_command_abort = 0x08000000; ///< sdo_unknown_command_abort
   bool heartbeat_suspends_life_guarding = true;     ///< heartbeat_suspends_life_guarding
+  bool emcy_before_stop = false;   ///< emcy_before_stop: the 0x8100 of NMT Stop goes out before Stopped
+  bool outputs_need_operational = false;  ///< outputs_need_operational: 0 A outside NMT Operational
   // Identity strings (0x6050, 0x6052, 0x6054, 0x6057): the manuals' example values.
   std::string device_version = "V1.0.0.0";          ///< device_version
   std::string serial_number = "123.4567";           ///< serial_number

@@ -90,6 +90,12 @@ void ValveApplication::on_nmt_command(NmtCommand command) {
       reset_communication_requested_ = true;
       break;
     }
+    case NmtCommand::Stop:
+      // Option: signal the forced fault while EMCY is still allowed (before Stopped).
+      if (common_.emcy_before_stop && node_.nmt_state() != NmtState::Stopped && force_communication_fault()) {
+        errors_.latch(kCommunicationError, kCommunicationRegister, false);
+      }
+      break;
     case NmtCommand::ResetNode:
       for (int i = 0; i < channel_count(); ++i) channel(i).dsm().force_init();  // TR_567
       fault_after_boot_up_ = false;

@@ -49,6 +49,10 @@ class ValveApplication : public canopen::Application {
 
   /// Call once the channels exist: fault-reset and error hooks, guarding lock, restore tracking.
   void install();
+  /// Option outputs_need_operational: the solenoids carry current only in NMT Operational.
+  bool outputs_allowed() const {
+    return !common_.outputs_need_operational || node_.nmt_state() == canopen::NmtState::Operational;
+  }
 
   canopen::Node& node_;
   CommonOptions common_;

@@ -94,3 +94,21 @@ TEST(EmcyHistoryOff, DepthZeroLeaves1003ToTheDevice) {
   EXPECT_EQ(h.node().od().get<int>(0x1003, 0), 3);
   EXPECT_EQ(h.node().od().get<std::uint32_t>(0x1003, 1), 0u);
 }
+
+TEST(EmcyPolicyKnobs, NoEmcyInPreOperationalWhenTheManualSaysSo) {
+  canopen::NodePolicy policy;
+  policy.emcy.send_in_preoperational = false;
+  vtest::CanopenHarness h(vtest::make_generic_od(), policy, 5);
+  h.power_on();
+  h.take();
+  h.node().emergency().raise(0x5000, 0x81);
+  h.run_ms(5);
+  EXPECT_TRUE(h.take().empty());
+  EXPECT_EQ(h.read_u(0x1001, 0), 0x81u);  // recorded all the same
+  EXPECT_EQ(h.read_u(0x1003, 1), 0x5000u);
+  h.nmt(0x01, 5);
+  h.run_ms(1);
+  h.take();
+  h.node().emergency().raise(0x6000, 0x81);
+  EXPECT_EQ(h.take(), Frames{Frame(0x085, {0x00, 0x60, 0x81, 0, 0, 0, 0, 0})});
+}

@@ -354,3 +354,49 @@ TEST_F(Md2Test, B16_RestoreAllThenResetCommunication) {
 }
 
 }  // namespace md2test
+
+namespace md2test {
+
+TEST_F(Md2Test, DefaultMappingFollowsTheControlModeAtTheNextReset) {
+  make({}, "controller");  // delivered in mode 3: command value 0x6380
+  EXPECT_EQ(read(0x1600, 2), 0x63800110u);
+  ASSERT_EQ(write(0x6043, 0, 9, 1), 0u);
+  EXPECT_EQ(read(0x1600, 2), 0x63800110u);  // unchanged until a reset
+  h->nmt(0x82, 1);
+  h->run_ticks(1);
+  h->take();
+  EXPECT_EQ(read(0x1600, 0), 2u);
+  EXPECT_EQ(read(0x1600, 2), 0x66000120u);  // dpc set point, 32 bit
+  EXPECT_EQ(read(0x1A00, 0), 2u);
+  EXPECT_EQ(read(0x1A00, 2), 0x66010120u);  // dpc actual value
+  EXPECT_EQ(read(0x1601, 2), 0x6B800110u);  // channel 2 still in mode 3
+  start();
+  h->send(0x201, {0x07, 0x00, 0xA0, 0x86, 0x01, 0x00});  // 100000
+  const auto f = h->take();
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0].id, 0x181u);
+  EXPECT_EQ(f[0].data.size(), 6u);
+  EXPECT_EQ(read(0x6600, 1), 100000u);
+  // Reset Node reloads the stored mode (3): the mapping goes back.
+  h->nmt(0x81, 1);
+  h->run_ticks(1);
+  h->take();
+  EXPECT_EQ(read(0x1600, 2), 0x63800110u);
+}
+
+TEST_F(Md2Test, SolenoidDriver2FaultAndTheGeneralError) {
+  dev->inject_fault("solenoid_b_short", true);
+  h->run_ms(1);
+  EXPECT_EQ(h->take(), Frames{Frame(0x081, {0x12, 0x23, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00})});
+  EXPECT_EQ(status(), 0x0001);  // hardware errors fault from INIT too
+  dev->inject_fault("general_error", true);
+  h->run_ms(1);
+  EXPECT_EQ(h->take(), Frames{Frame(0x081, {0x00, 0x10, 0x03, 0x00, 0x00, 0x00, 0x00, 0x00})});
+  EXPECT_EQ(read(0x1003), 2u);
+  EXPECT_EQ(read(0x1003, 1), 0x1000u);  // newest first
+  EXPECT_EQ(read(0x1003, 2), 0x2312u);
+  make({{"solenoids", "1"}});
+  EXPECT_NE(dev->inject_fault("solenoid_b_short", true), "");  // no driver 2
+}
+
+}  // namespace md2test

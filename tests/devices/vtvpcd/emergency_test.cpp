@@ -198,3 +198,15 @@ TEST(VtvpcdEmcy, InhibitTimeSpacesFrames) {
   n->run_ms(10);
   EXPECT_EQ(n->take().size(), 1u);
 }
+
+TEST(VtvpcdEmcy, PreOperationalEmcyCanBeSwitchedOff) {  // emcy_in_preoperational = false
+  vtest::Vtvpcd n({{"emcy_in_preoperational", "false"}});
+  n.dev().inject_fault("supply_voltage", true);
+  n->run_ms(5);
+  EXPECT_TRUE(n->take().empty());
+  EXPECT_EQ(n.raw(0x2C68), 0x0518);
+  n.start();
+  n.dev().inject_fault("lvdt_fault", true);
+  n->run_ms(1);
+  EXPECT_EQ(n->take(), Frames{Frame(0x0BF, {0x36, 0x52, 0x85, 0, 0, 0, 0, 0})});
+}
