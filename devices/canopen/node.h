@@ -61,6 +61,8 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   NodePolicy& policy() { return policy_; }
   const NodePolicy& policy() const { return policy_; }
   std::uint8_t node_id() const { return node_id_; }
+  /// The endpoint id on the attached bus (-1 before attach); for Bus::set_online (bus-off faults).
+  int endpoint() const { return endpoint_; }
   std::uint8_t pending_node_id() const { return pending_node_id_; }
   /// Node-ID that the next communication reset applies (LSS, 0x2000-style objects).
   void set_pending_node_id(std::uint8_t id) { pending_node_id_ = id; }

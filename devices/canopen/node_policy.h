@@ -167,6 +167,14 @@ struct StorePolicy {
     std::vector<std::pair<std::uint16_t, std::uint16_t>> ranges;
   };
   std::vector<Group> groups;
+  /// Values the non-volatile memory holds at every power-on, on top of the file (a scenario's
+  /// parameter overrides): loaded like stored values, so resets apply them and 0x1011 erases them.
+  struct Preset {
+    std::uint16_t index;
+    std::uint8_t sub;
+    std::vector<std::uint8_t> bytes;
+  };
+  std::vector<Preset> preset;
 };
 
 struct NodePolicy {

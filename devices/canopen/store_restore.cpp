@@ -52,7 +52,9 @@ void StoreRestore::bind_objects() {
 bool StoreRestore::power_on(std::string& error) {
   pending_restore_.clear();
   store_.set_path(node_.policy().store.path);
-  return store_.load(error);
+  const bool ok = store_.load(error);
+  for (const auto& p : node_.policy().store.preset) store_.put(p.index, p.sub, ParameterStore::Value{false, p.bytes});
+  return ok;
 }
 
 bool StoreRestore::in_pending_restore(std::uint16_t index) const {

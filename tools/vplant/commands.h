@@ -13,5 +13,6 @@ using Runner = std::function<int()>;
 Runner add_node_command(CLI::App& app);
 Runner add_eds_command(CLI::App& app);
 Runner add_devices_command(CLI::App& app);
+Runner add_run_command(CLI::App& app);
 
 }  // namespace vplant

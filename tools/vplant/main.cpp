@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   add("node", "run one emulated node (a product or any EDS file)", vplant::add_node_command);
   add("eds", "print a product's EDS file, or check an EDS file", vplant::add_eds_command);
   add("devices", "list the emulated products", vplant::add_devices_command);
+  add("run", "run a scenario: the whole plant, a scripted master, faults and checks", vplant::add_run_command);
 
   try {
     app.parse(argc, argv);

@@ -84,6 +84,25 @@ TEST(StoreRestore, NodeRelativeCobIdsFollowANewNodeId) {
   EXPECT_EQ(h.node().od().get<std::uint32_t>(0x1800, 1), 0x189u);
 }
 
+TEST(StoreRestore, PresetValuesApplyAtEveryPowerOnLikeStoredOnes) {
+  canopen::NodePolicy p;
+  p.store.preset = {{0x1017, 0, {0xF4, 0x01}}, {0x2000, 0, {0x2A}}};
+  vtest::CanopenHarness h(vtest::make_generic_od(), p, 5);
+  h.power_on();
+  EXPECT_EQ(h.node().od().get<int>(0x1017), 500);
+  EXPECT_EQ(h.node().od().get<int>(0x2000), 42);
+  ASSERT_EQ(h.write(0x2000, 0, 7, 1), 0u);
+  h.node().power_off();
+  h.power_on();  // the preset is back after a power cycle
+  EXPECT_EQ(h.node().od().get<int>(0x2000), 42);
+  // Restore defaults erases it like any stored value: defaults after the next reset.
+  ASSERT_EQ(h.write(0x1011, 1, kLoad, 4), 0u);
+  h.nmt(0x81, 5);
+  h.run_ticks(1);
+  EXPECT_EQ(h.node().od().get<int>(0x2000), 7);
+  EXPECT_EQ(h.node().od().get<int>(0x1017), 0);
+}
+
 TEST(StoreRestore, FailingMemoryAborts06060000) {
   vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
   h.power_on();

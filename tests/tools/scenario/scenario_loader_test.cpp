@@ -1,0 +1,137 @@
+// The YAML format: every section read into the model, signal expressions, frame patterns,
+// durations.
+#include <gtest/gtest.h>
+
+#include "tools/scenario/frame_pattern.h"
+#include "tools/scenario/scenario_loader.h"
+#include "tools/scenario/signal_expression.h"
+
+using namespace scenario;
+
+TEST(ScenarioLoader, ReadsEverySection) {
+  const auto s = parse_scenario(R"(
+name: demo
+description: all sections
+buses:
+  - {name: main, transport: virtual, bitrate: 250000}
+  - {name: aux, transport: "socketcan:vcan1"}
+nodes:
+  - name: ax
+    device: axis
+    variant: standard
+    node_id: 5
+    bus: main
+    settings: {knob: "on"}
+    parameters: {"0x1017": 100, "0x1A00:0x01": 0x60000020}
+    store: ax.store
+plant:
+  axis: {gain: 2}
+wires:
+  - {from: ax.velocity, to: axis.velocity_command, scale: 2, offset: 0.5, noise: 0.1}
+clock: {tick: 500us, mode: virtual, duration: 2.5s, seed: 42}
+outputs:
+  trace: out/demo.log
+  sample_period: 100Hz
+  csv: {file: out/demo.csv, signals: [axis.position, "frame(aux:0x185)[0:2] as i16 / 10"]}
+  plots:
+    - file: out/demo.png
+      title: Demo
+      y_label: position [mm]
+      signals: [{signal: axis.position * 1000, label: position}]
+  junit: out/demo.xml
+script:
+  - nmt: start
+  - at: 1s
+    name: late sync
+    sync: {period: 1ms, counter: 16}
+faults:
+  - {at: 1s, for: 10ms, bus_off: ax}
+)",
+                                "demo.yaml", "/scenarios");
+  EXPECT_EQ(s.name, "demo");
+  ASSERT_EQ(s.buses.size(), 2u);
+  EXPECT_EQ(s.buses[0].bitrate, 250000u);
+  EXPECT_EQ(s.buses[1].iface, "vcan1");
+  ASSERT_EQ(s.nodes.size(), 1u);
+  EXPECT_EQ(s.nodes[0].node_id, 5);
+  EXPECT_EQ(s.nodes[0].settings.at("knob"), "on");
+  ASSERT_EQ(s.nodes[0].parameters.size(), 2u);
+  EXPECT_EQ(s.nodes[0].parameters[1].index, 0x1A00);
+  EXPECT_EQ(s.nodes[0].parameters[1].sub, 1);
+  EXPECT_EQ(s.nodes[0].parameters[1].value.integer, 0x60000020);
+  EXPECT_EQ(s.nodes[0].store, "/scenarios/ax.store");
+  EXPECT_TRUE(s.plant.IsMap());
+  ASSERT_EQ(s.wires.size(), 1u);
+  EXPECT_EQ(s.wires[0].scale, 2);
+  EXPECT_EQ(s.clock.tick, sim::microseconds(500));
+  EXPECT_EQ(*s.clock.duration, sim::milliseconds(2500));
+  EXPECT_EQ(s.clock.seed, 42u);
+  EXPECT_EQ(s.outputs.sample_period, sim::milliseconds(10));
+  ASSERT_TRUE(s.outputs.csv);
+  EXPECT_EQ(s.outputs.csv->signals[1].frame.bus, "aux");
+  EXPECT_DOUBLE_EQ(s.outputs.csv->signals[1].scale, 0.1);
+  ASSERT_EQ(s.outputs.plots.size(), 1u);
+  EXPECT_EQ(s.outputs.plots[0].labels[0], "position");
+  ASSERT_EQ(s.script.size(), 2u);
+  EXPECT_EQ(*s.script[1].at, sim::milliseconds(1000));
+  EXPECT_EQ(s.script[1].name, "late sync");
+  EXPECT_EQ(std::get<SyncStep>(s.script[1].action).counter_overflow, 16);
+  ASSERT_EQ(s.faults.size(), 1u);
+  EXPECT_EQ(*s.faults[0].duration, sim::milliseconds(10));
+  EXPECT_EQ(std::get<BusOff>(s.faults[0].action).node, "ax");
+}
+
+TEST(SignalExpression, PortsFramesAndArithmetic) {
+  const auto a = parse_signal("cyl.position * 1000 - 5", {});
+  EXPECT_EQ(a.kind, SignalExpr::Kind::Port);
+  EXPECT_EQ(a.owner, "cyl");
+  EXPECT_EQ(a.port, "position");
+  EXPECT_DOUBLE_EQ(a.scale, 1000);
+  EXPECT_DOUBLE_EQ(a.offset, -5);
+  const auto b = parse_signal("valve-cyl.solenoid_a_current", {});
+  EXPECT_EQ(b.owner, "valve-cyl");
+  const auto c = parse_signal("frame(0x185)[0:4] as i32 * 0.1e-3", {});
+  EXPECT_EQ(c.kind, SignalExpr::Kind::Frame);
+  EXPECT_EQ(c.frame.id, 0x185u);
+  EXPECT_EQ(c.frame.count, 4);
+  EXPECT_DOUBLE_EQ(c.scale, 1e-4);
+  const std::uint8_t data[] = {0xFE, 0xFF, 0xFF, 0xFF, 0x10};
+  EXPECT_DOUBLE_EQ(decode_field(c.frame, data, 5), -2.0);
+  const auto d = parse_signal("frame(main:0x1F0)[4]", {});
+  EXPECT_EQ(d.frame.bus, "main");
+  EXPECT_DOUBLE_EQ(decode_field(d.frame, data, 5), 16.0);
+  EXPECT_TRUE(std::isnan(decode_field(d.frame, data, 4)));  // frame too short
+  EXPECT_THROW(parse_signal("position", {}), LoadError);
+  EXPECT_THROW(parse_signal("frame(0x185)[6:10]", {}), LoadError);
+  EXPECT_THROW(parse_signal("cyl.position * x", {}), LoadError);
+}
+
+TEST(FramePattern, WildcardsAndOpenEnd) {
+  FramePattern p;
+  p.id = 0x585;
+  ASSERT_EQ(parse_data_pattern("43 00 10 ?? *", p), "");
+  EXPECT_TRUE(p.matches(sim::CanFrame::data_frame(0x585, {0x43, 0x00, 0x10, 0x00, 1, 2, 3, 4})));
+  EXPECT_TRUE(p.matches(sim::CanFrame::data_frame(0x585, {0x43, 0x00, 0x10, 0x07})));
+  EXPECT_FALSE(p.matches(sim::CanFrame::data_frame(0x585, {0x43, 0x00, 0x11, 0x00})));
+  EXPECT_FALSE(p.matches(sim::CanFrame::data_frame(0x585, {0x43, 0x00, 0x10})));
+  EXPECT_FALSE(p.matches(sim::CanFrame::data_frame(0x586, {0x43, 0x00, 0x10, 0x00})));
+  ASSERT_EQ(parse_data_pattern("00", p), "");
+  EXPECT_FALSE(p.matches(sim::CanFrame::data_frame(0x585, {0x00, 0x00})));  // exact length without *
+  EXPECT_NE(parse_data_pattern("* 00", p), "");
+  EXPECT_NE(parse_data_pattern("0G", p), "");
+  EXPECT_EQ(p.describe().substr(0, 5), "0x585");
+}
+
+TEST(Durations, UnitsAndRates) {
+  EXPECT_EQ(*parse_duration("250us"), sim::microseconds(250));
+  EXPECT_EQ(*parse_duration("10ms"), sim::milliseconds(10));
+  EXPECT_EQ(*parse_duration("1.5s"), sim::milliseconds(1500));
+  EXPECT_EQ(*parse_duration("2"), sim::milliseconds(2000));
+  EXPECT_EQ(*parse_duration("1min"), sim::milliseconds(60000));
+  EXPECT_FALSE(parse_duration("-1s"));
+  EXPECT_FALSE(parse_duration("1 h"));
+  EXPECT_EQ(*parse_integer("0x7F"), 127);
+  EXPECT_EQ(*parse_integer("-12"), -12);
+  EXPECT_EQ(*parse_integer("0b101"), 5);
+  EXPECT_FALSE(parse_integer("12a"));
+}

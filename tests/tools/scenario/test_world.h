@@ -1,0 +1,17 @@
+// Small stand-ins for the engine tests: an "axis" product (a CANopen node that reports a position
+// by TPDO1 on SYNC and takes a velocity command by RPDO1) and an "axis" plant (an integrator with
+// a gain and a drift parameter). They exercise every path of the engine without the real
+// products and physics.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "tools/scenario/environment.h"
+
+namespace vtest {
+
+/// The test environment: product "axis" (plus the registry's), plant section `axis: {gain, drift}`.
+scenario::Environment test_environment();
+
+}  // namespace vtest

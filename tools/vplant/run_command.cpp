@@ -1,0 +1,78 @@
+// `vplant run SCENARIO`: the whole plant from a scenario file (docs/scenarios.md). Exit codes:
+// 0 every assertion held, 1 one failed, 2 bad input (file, option, interface).
+#include <unistd.h>
+
+#include <csignal>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tools/scenario/runner.h"
+#include "tools/scenario/yaml_fields.h"
+#include "tools/vplant/commands.h"
+#include "tools/vplant/exit_codes.h"
+#include "tools/vplant/key_value.h"
+
+namespace vplant {
+
+namespace {
+
+struct RunArgs {
+  std::string scenario;
+  std::vector<std::string> can;
+  bool realtime = false;
+  std::string duration;
+  long long seed = -1;
+  std::string trace, csv, junit;
+  bool quiet = false;
+};
+
+extern "C" void stop_run_on_signal(int) {
+  if (auto* r = scenario::active_runner()) r->request_stop();
+}
+
+int run(const RunArgs& a) {
+  scenario::RunOptions o;
+  std::string error;
+  if (!parse_key_values(a.can, o.can, error)) {
+    std::fprintf(stderr, "vplant run: --can %s (expected BUS=IFACE)\n", error.c_str());
+    return kExitBadInput;
+  }
+  if (!a.duration.empty()) {
+    const auto d = scenario::parse_duration(a.duration);
+    if (!d || d->count() <= 0) {
+      std::fprintf(stderr, "vplant run: --duration '%s' is not a duration (e.g. 10, 2.5s, 500ms)\n", a.duration.c_str());
+      return kExitBadInput;
+    }
+    o.duration = *d;
+  }
+  if (a.seed >= 0) o.seed = static_cast<std::uint64_t>(a.seed);
+  o.realtime = a.realtime;
+  o.trace = a.trace;
+  o.csv = a.csv;
+  o.junit = a.junit;
+  o.quiet = a.quiet;
+  o.progress = !a.quiet && ::isatty(STDERR_FILENO);
+  std::signal(SIGINT, stop_run_on_signal);
+  std::signal(SIGTERM, stop_run_on_signal);
+  return scenario::run_scenario_file(a.scenario, scenario::default_environment(), o);
+}
+
+}  // namespace
+
+Runner add_run_command(CLI::App& app) {
+  auto a = std::make_shared<RunArgs>();
+  app.add_option("scenario", a->scenario, "scenario file (YAML, see docs/scenarios.md)")->required();
+  app.add_option("--can", a->can, "BUS=IFACE: put a scenario bus on a SocketCAN interface (repeatable)");
+  app.add_flag("--realtime", a->realtime, "pace the run by the wall clock (default: virtual time, as fast as possible)");
+  app.add_option("--duration", a->duration, "simulated time to run, e.g. 10 or 2.5s (overrides clock.duration)");
+  app.add_option("--seed", a->seed, "seed for noise and random faults (overrides clock.seed)")->check(CLI::NonNegativeNumber);
+  app.add_option("--trace", a->trace, "write all frames in candump -L format");
+  app.add_option("--csv", a->csv, "write the recorded signals as CSV (default signals: every wired port)");
+  app.add_option("--junit", a->junit, "write the assertions as JUnit XML");
+  app.add_flag("--quiet", a->quiet, "print only failures");
+  return [a] { return run(*a); };
+}
+
+}  // namespace vplant
