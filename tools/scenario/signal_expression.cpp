@@ -3,7 +3,9 @@
 #include <cctype>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <optional>
 
 #include "tools/scenario/yaml_fields.h"
 
@@ -19,51 +21,23 @@ std::string_view trim(std::string_view s) {
 
 bool is_name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-'; }
 
-// Splits the trailing "* k / k + c - c" operations off the expression. Only the operators that
-// follow the base are arithmetic; a '-' inside a name is part of the name.
-void parse_arithmetic(std::string_view& rest, SignalExpr& e, const SourceMark& mark, std::string_view text) {
-  while (true) {
-    rest = trim(rest);
-    if (rest.empty()) return;
-    const char op = rest.front();
-    if (op != '*' && op != '/' && op != '+' && op != '-')
-      throw LoadError(mark, "signal '" + std::string(text) + "': unexpected '" + std::string(rest) + "'");
-    rest.remove_prefix(1);
-    rest = trim(rest);
-    // The operand extends to the next operator that is not part of a number's exponent.
-    std::size_t n = 0;
-    while (n < rest.size()) {
-      const char c = rest[n];
-      if ((c == '*' || c == '/' || c == '+' || c == '-') && n > 0 && rest[n - 1] != 'e' && rest[n - 1] != 'E') break;
-      if (c == ' ') break;
-      ++n;
-    }
-    const auto v = parse_number(rest.substr(0, n));
-    if (!v) throw LoadError(mark, "signal '" + std::string(text) + "': '" + std::string(rest.substr(0, n)) + "' is not a number");
-    if (op == '*') {
-      e.scale *= *v;
-      e.offset *= *v;
-    } else if (op == '/') {
-      if (*v == 0) throw LoadError(mark, "signal '" + std::string(text) + "': division by zero");
-      e.scale /= *v;
-      e.offset /= *v;
-    } else if (op == '+') {
-      e.offset += *v;
-    } else {
-      e.offset -= *v;
-    }
-    rest.remove_prefix(n);
+bool is_operator(char c) { return c == '*' || c == '/' || c == '+' || c == '-'; }
+
+// A number token extends to the next operator that is not the sign of an exponent, or a space.
+std::string_view take_number(std::string_view rest) {
+  std::size_t n = 0;
+  while (n < rest.size()) {
+    const char c = rest[n];
+    if (c == ' ' || c == ')' || (is_operator(c) && n > 0 && rest[n - 1] != 'e' && rest[n - 1] != 'E')) break;
+    if (is_operator(c) && n == 0) break;
+    ++n;
   }
+  return rest.substr(0, n);
 }
 
-}  // namespace
-
-SignalExpr parse_signal(std::string_view text, const SourceMark& mark) {
+// One signal: frame(...)[...] [as T], or node.port / component.signal. Consumes it from `rest`.
+SignalExpr parse_base(std::string_view& rest, const std::function<LoadError(const std::string&)>& bad) {
   SignalExpr e;
-  e.text = std::string(trim(text));
-  e.mark = mark;
-  std::string_view rest = trim(text);
-  const auto bad = [&](const std::string& why) { return LoadError(mark, "signal '" + e.text + "': " + why); };
   if (rest.substr(0, 6) == "frame(") {
     e.kind = SignalExpr::Kind::Frame;
     rest.remove_prefix(6);
@@ -113,23 +87,95 @@ SignalExpr parse_signal(std::string_view text, const SourceMark& mark) {
                      : *bits == 32 ? FrameField::Type::Float32
                                    : FrameField::Type::Float64;
     }
-  } else {
-    std::size_t n = 0;
-    while (n < rest.size() && (is_name_char(rest[n]) || rest[n] == '.')) {
-      // A '-' followed by a digit or space after a complete name is an operator, not part of it.
-      if (rest[n] == '-' && n + 1 < rest.size() && (rest[n + 1] == ' ' || std::isdigit(static_cast<unsigned char>(rest[n + 1]))))
-        break;
-      ++n;
-    }
-    const std::string_view name = rest.substr(0, n);
-    const auto dot = name.find('.');
-    if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size())
-      throw bad("expected node.port, component.signal or frame(ID)[bytes]");
-    e.owner = std::string(name.substr(0, dot));
-    e.port = std::string(name.substr(dot + 1));
-    rest.remove_prefix(n);
+    return e;
   }
-  parse_arithmetic(rest, e, mark, e.text);
+  std::size_t n = 0;
+  while (n < rest.size() && (is_name_char(rest[n]) || rest[n] == '.')) {
+    // A '-' followed by a digit or space after a complete name is an operator, not part of it.
+    if (rest[n] == '-' && n + 1 < rest.size() && (rest[n + 1] == ' ' || std::isdigit(static_cast<unsigned char>(rest[n + 1]))))
+      break;
+    ++n;
+  }
+  const std::string_view name = rest.substr(0, n);
+  const auto dot = name.find('.');
+  if (dot == std::string_view::npos || dot == 0 || dot + 1 == name.size())
+    throw bad(name.empty() ? "expected a signal or a number at '" + std::string(rest) + "'"
+                           : "expected node.port, component.signal or frame(ID)[bytes], not '" + std::string(name) + "'");
+  e.owner = std::string(name.substr(0, dot));
+  e.port = std::string(name.substr(dot + 1));
+  rest.remove_prefix(n);
+  return e;
+}
+
+bool starts_number(std::string_view rest) {
+  return !rest.empty() && (std::isdigit(static_cast<unsigned char>(rest.front())) || rest.front() == '.');
+}
+
+}  // namespace
+
+// expression := term (('+' | '-') term)*;  term := factor (('*' | '/') factor)*, at most one
+// factor a signal and no division by one;  factor := signal | number.
+SignalExpr parse_signal(std::string_view text, const SourceMark& mark) {
+  SignalExpr e;
+  e.text = std::string(trim(text));
+  e.mark = mark;
+  const std::function<LoadError(const std::string&)> bad = [&](const std::string& why) {
+    return LoadError(mark, "signal '" + e.text + "': " + why);
+  };
+  std::string_view rest = trim(text);
+  bool have_base = false;
+  double sign = 1.0;
+  if (!rest.empty() && rest.front() == '-') {  // a leading unary minus
+    sign = -1.0;
+    rest.remove_prefix(1);
+  }
+  while (true) {
+    std::optional<SignalExpr> base;
+    double coefficient = sign;
+    bool divide = false;
+    while (true) {
+      rest = trim(rest);
+      if (starts_number(rest)) {
+        const auto token = take_number(rest);
+        const auto v = parse_number(token);
+        if (!v) throw bad("'" + std::string(token) + "' is not a number");
+        if (divide && *v == 0) throw bad("division by zero");
+        coefficient = divide ? coefficient / *v : coefficient * *v;
+        rest.remove_prefix(token.size());
+      } else {
+        if (divide) throw bad("division by a signal");
+        if (base) throw bad("a product of two signals is not supported");
+        base = parse_base(rest, bad);
+      }
+      rest = trim(rest);
+      if (rest.empty() || (rest.front() != '*' && rest.front() != '/')) break;
+      divide = rest.front() == '/';
+      rest.remove_prefix(1);
+    }
+    if (!base) {
+      e.offset += coefficient;
+    } else if (!have_base) {
+      const auto keep_text = std::move(e.text);
+      const auto keep_offset = e.offset;
+      e = std::move(*base);
+      e.text = keep_text;
+      e.mark = mark;
+      e.offset = keep_offset;
+      e.scale = coefficient;
+      have_base = true;
+    } else {
+      base->scale = coefficient;
+      base->text = e.text;
+      base->mark = mark;
+      e.more.push_back(std::move(*base));
+    }
+    if (rest.empty()) break;
+    if (rest.front() != '+' && rest.front() != '-') throw bad("unexpected '" + std::string(rest) + "'");
+    sign = rest.front() == '+' ? 1.0 : -1.0;
+    rest.remove_prefix(1);
+    if (trim(rest).empty()) throw bad("missing operand after '" + std::string(1, sign > 0 ? '+' : '-') + "'");
+  }
+  if (!have_base) throw bad("expected node.port, component.signal or frame(ID)[bytes]");
   return e;
 }
 

@@ -4,6 +4,9 @@
 //   frame(0x185)[0:4] as i32          bytes [0,4) of the last frame with COB-ID 0x185, little-endian
 //   frame(main:0x185)[4] as u8        ... on bus `main` (default: the first bus)
 //   cyl.position * 1000 + 5           any of the above scaled (`* k`, `/ k`) and offset (`+ c`, `- c`)
+//   frame(0x1FF)[0:4] as i32 - shaft.angle * 57.3
+//                                     a sum of such terms (`+`, `-`; `*` and `/` bind tighter; a
+//                                     product of two signals is not an expression)
 // Types of frame fields: u8 u16 u24 u32 u64 i8 i16 i24 i32 i64 f32 f64 (default: unsigned of the
 // field's width). A frame field is NaN until its first frame.
 #pragma once
@@ -11,6 +14,7 @@
 #include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "tools/scenario/source_mark.h"
 
@@ -25,6 +29,8 @@ struct FrameField {
   enum class Type { Unsigned, Signed, Float32, Float64 } type = Type::Unsigned;
 };
 
+/// The first term (kind, owner/port or frame, times `scale`) plus `more` terms (each its own
+/// signal times its `scale`, the sign included) plus `offset`.
 struct SignalExpr {
   enum class Kind { Port, Frame } kind = Kind::Port;
   std::string owner;  ///< Port: node or plant component name
@@ -32,6 +38,7 @@ struct SignalExpr {
   FrameField frame;
   double scale = 1.0;
   double offset = 0.0;
+  std::vector<SignalExpr> more;  ///< further signal terms of a sum (their offset is 0)
   std::string text;  ///< as written (used as the column / legend name)
   SourceMark mark;
 

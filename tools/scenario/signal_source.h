@@ -1,5 +1,6 @@
 // Resolved signals: a SignalExpr bound to the value it reads (a port's double, a field of the last
-// frame with an identifier, a node's NMT state). Reading a signal never allocates.
+// frame with an identifier, a node's NMT state), or a sum of such terms. Reading a signal never
+// allocates.
 #pragma once
 
 #include <cstdint>
@@ -52,8 +53,12 @@ class Signal {
       case Kind::Nmt: v = static_cast<double>(node_->powered() ? static_cast<int>(node_->nmt_state()) : 0); break;
       default: v = std::numeric_limits<double>::quiet_NaN();
     }
-    return v * scale_ + offset_;
+    v = v * scale_ + offset_;
+    for (const auto& term : more_) v += term.value();
+    return v;
   }
+  /// Adds a further term of a sum (SignalExpr::more), resolved at build time.
+  void add_term(Signal term) { more_.push_back(std::move(term)); }
   const std::string& name() const { return name_; }
 
  private:
@@ -64,6 +69,7 @@ class Signal {
   FrameField field_;
   const canopen::Node* node_ = nullptr;
   double scale_ = 1, offset_ = 0;
+  std::vector<Signal> more_;
   std::string name_;
 };
 

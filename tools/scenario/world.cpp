@@ -196,6 +196,12 @@ NodeInstance* World::find_node(int bus, std::uint8_t node_id) {
 }
 
 Signal World::resolve(const SignalExpr& e) {
+  Signal s = resolve_term(e);
+  for (const auto& term : e.more) s.add_term(resolve_term(term));
+  return s;
+}
+
+Signal World::resolve_term(const SignalExpr& e) {
   if (e.kind == SignalExpr::Kind::Frame) {
     const int bus = bus_index(e.frame.bus);
     if (bus < 0) throw LoadError(e.mark, "signal '" + e.text + "': unknown bus '" + e.frame.bus + "'");

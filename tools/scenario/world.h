@@ -68,6 +68,7 @@ class World {
   void build_plant(const Environment& env);
   void build_wires();
   PortRef find_port(const std::string& qualified, const SourceMark& mark) const;
+  Signal resolve_term(const SignalExpr& e);
 
   const Scenario& scenario_;
   Random random_;

@@ -106,6 +106,36 @@ TEST(SignalExpression, PortsFramesAndArithmetic) {
   EXPECT_THROW(parse_signal("cyl.position * x", {}), LoadError);
 }
 
+TEST(SignalExpression, SumsOfTermsWithPrecedence) {
+  const auto a = parse_signal("frame(0x1FF)[0:4] as i32 - shaft.angle * 360 / 4 + 2 * 3", {});
+  EXPECT_EQ(a.kind, SignalExpr::Kind::Frame);
+  EXPECT_DOUBLE_EQ(a.scale, 1);
+  EXPECT_DOUBLE_EQ(a.offset, 6);  // '*' binds tighter than '+'
+  ASSERT_EQ(a.more.size(), 1u);
+  EXPECT_EQ(a.more[0].qualified_port(), "shaft.angle");
+  EXPECT_DOUBLE_EQ(a.more[0].scale, -90);
+  EXPECT_DOUBLE_EQ(a.more[0].offset, 0);
+  const auto b = parse_signal("cyl.position + 5 * 2", {});
+  EXPECT_DOUBLE_EQ(b.offset, 10);
+  EXPECT_DOUBLE_EQ(b.scale, 1);
+  const auto c = parse_signal("1 - 2 * cyl.position", {});  // a number first, the signal second
+  EXPECT_EQ(c.qualified_port(), "cyl.position");
+  EXPECT_DOUBLE_EQ(c.scale, -2);
+  EXPECT_DOUBLE_EQ(c.offset, 1);
+  EXPECT_TRUE(c.more.empty());
+  const auto d = parse_signal("-cyl.position - valve-cyl.spool - 1e-3", {});
+  EXPECT_DOUBLE_EQ(d.scale, -1);
+  ASSERT_EQ(d.more.size(), 1u);
+  EXPECT_EQ(d.more[0].owner, "valve-cyl");
+  EXPECT_DOUBLE_EQ(d.more[0].scale, -1);
+  EXPECT_DOUBLE_EQ(d.offset, -1e-3);
+  EXPECT_THROW(parse_signal("cyl.position * shaft.angle", {}), LoadError);
+  EXPECT_THROW(parse_signal("cyl.position / shaft.angle", {}), LoadError);
+  EXPECT_THROW(parse_signal("cyl.position / 0", {}), LoadError);
+  EXPECT_THROW(parse_signal("cyl.position -", {}), LoadError);
+  EXPECT_THROW(parse_signal("5 + 3", {}), LoadError);
+}
+
 TEST(FramePattern, WildcardsAndOpenEnd) {
   FramePattern p;
   p.id = 0x585;

@@ -54,6 +54,27 @@ script:
   EXPECT_EQ(r.outcomes.size(), 20u);
 }
 
+TEST(ScriptedMaster, ConditionsOnTheDifferenceOfTwoSignals) {
+  const auto r = run_text(kMachine + R"(
+script:
+  - wait: 10ms
+  - nmt: start
+  - sync: 10ms
+  - rpdo: {node: ax, pdo: 1, values: {"0x6001": 100000}}
+  - wait_until: {signal: axis.position, above: 0.05, timeout: 1s}
+  - name: the TPDO lags the plant by at most one SYNC period and a tick (0.1 m/s * 11 ms)
+    expect: {signal: "frame(0x185)[0:4] as i32 * 1e-6 - axis.position", between: [-0.00111, 0], during: 200ms}
+  - wait: 200ms
+  - name: a sum that cannot hold
+    expect: {signal: "axis.position - axis.position + 1", value: 0, tolerance: 0.5}
+)");
+  EXPECT_EQ(r.rc, 1);
+  ASSERT_EQ(r.outcomes.size(), 3u) << r.failure_text();
+  EXPECT_TRUE(r.outcomes[1].passed) << r.failure_text();
+  EXPECT_FALSE(r.outcomes[2].passed);
+  EXPECT_NE(r.outcomes[2].actual.find("1"), std::string::npos) << r.outcomes[2].actual;
+}
+
 TEST(ScriptedMaster, ReportsEachFailureWithTimeExpectedAndActual) {
   const auto r = run_text(kMachine + R"(
 script:
