@@ -770,7 +770,7 @@ void Reader::build_compact_array(std::uint16_t index, const ObjectSections& secs
     OdEntry copy = *od_.entry(index, 1);
     copy.sub = static_cast<std::uint8_t>(sub);
     copy.name = name + std::to_string(sub);
-    od_.object(index)->entries[copy.sub] = std::move(copy);
+    od_.add_entry(std::move(copy));
     default_lines_[{index, static_cast<std::uint8_t>(sub)}] = default_lines_[{index, 1}];
   }
   if (secs.names) apply_names(index, *secs.names, count);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <stdexcept>
+#include <utility>
 
 namespace canopen {
 
@@ -84,6 +85,7 @@ void OdEntry::reset_to_default(std::uint8_t node_id) { value = default_for_node(
 OdObject& ObjectDictionary::add_object(std::uint16_t index, std::string name, ObjectCode code) {
   auto [it, inserted] = objects_.try_emplace(index);
   if (inserted) {
+    cache_.clear();  // it may hold misses for this index
     it->second.index = index;
     it->second.name = std::move(name);
     it->second.code = code;
@@ -96,6 +98,7 @@ OdEntry& ObjectDictionary::add_entry(std::uint16_t index, std::uint8_t sub, std:
   auto& obj = add_object(index, sub == 0 ? name : std::string{}, ObjectCode::Var);
   if (sub != 0 && obj.code == ObjectCode::Var) obj.code = ObjectCode::Record;
   OdEntry& e = obj.entries[sub];
+  cache_.clear();
   e.index = index;
   e.sub = sub;
   e.name = std::move(name);
@@ -107,6 +110,12 @@ OdEntry& ObjectDictionary::add_entry(std::uint16_t index, std::uint8_t sub, std:
   e.default_value = default_value;
   e.value = std::move(default_value);
   return e;
+}
+
+OdEntry& ObjectDictionary::add_entry(OdEntry entry) {
+  auto& obj = add_object(entry.index, std::string{}, ObjectCode::Record);
+  cache_.clear();
+  return obj.entries[entry.sub] = std::move(entry);
 }
 
 OdEntry& ObjectDictionary::add_var(std::uint16_t index, std::string name, DataType type, Access access,
@@ -123,6 +132,7 @@ Bytes ObjectDictionary::encode(DataType type, std::string_view text) {
 
 void ObjectDictionary::remove_entry(std::uint16_t index, std::uint8_t sub) {
   if (auto* o = object(index)) o->entries.erase(sub);
+  cache_.clear();
 }
 
 // ---- lookup ------------------------------------------------------------------------------------
@@ -137,21 +147,20 @@ const OdObject* ObjectDictionary::object(std::uint16_t index) const {
   return it == objects_.end() ? nullptr : &it->second;
 }
 
-OdEntry* ObjectDictionary::entry(std::uint16_t index, std::uint8_t sub) {
-  auto* o = object(index);
-  if (!o) return nullptr;
-  auto it = o->entries.find(sub);
-  return it == o->entries.end() ? nullptr : &it->second;
-}
-
-const OdEntry* ObjectDictionary::entry(std::uint16_t index, std::uint8_t sub) const {
-  const auto* o = object(index);
-  if (!o) return nullptr;
-  auto it = o->entries.find(sub);
-  return it == o->entries.end() ? nullptr : &it->second;
+const OdEntry* ObjectDictionary::find_entry(std::uint16_t index, std::uint8_t sub) const {
+  OdEntry* e = nullptr;
+  if (auto* o = const_cast<OdObject*>(object(index))) {
+    if (auto it = o->entries.find(sub); it != o->entries.end()) e = &it->second;
+  }
+  cache_.insert(EntryCache::key(index, sub), e);  // map nodes: the address is stable until removed
+  return e;
 }
 
 SdoAbort ObjectDictionary::locate(std::uint16_t index, std::uint8_t sub, OdEntry*& out) {
+  if (auto* e = entry(index, sub)) {
+    out = e;
+    return SdoAbort::None;
+  }
   auto* o = object(index);
   if (!o) return SdoAbort::NoObject;
   auto it = o->entries.find(sub);

@@ -13,9 +13,11 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "devices/canopen/data_type.h"
+#include "devices/canopen/entry_cache.h"
 #include "devices/canopen/sdo_abort.h"
 
 namespace canopen {
@@ -99,7 +101,9 @@ struct OdObject {
   /// CiA 306 ObjFlags: hints for configuration tools (bit 0 refuse write on download, bit 1
   /// refuse read on scan). The device itself ignores them.
   std::uint32_t obj_flags = 0;
-  std::map<std::uint8_t, OdEntry> entries;  // node-based: entry addresses stay valid
+  // Node-based: entry addresses stay valid. Add and remove entries only through ObjectDictionary
+  // (it keeps its lookup cache in step).
+  std::map<std::uint8_t, OdEntry> entries;
 };
 
 /// Numeric helpers on little-endian byte strings of a given CiA type.
@@ -127,6 +131,8 @@ class ObjectDictionary {
   /// Adds sub-index `sub` to an existing object (creates a VAR object for sub 0 if absent).
   OdEntry& add_entry(std::uint16_t index, std::uint8_t sub, std::string name, DataType type, Access access,
                      Bytes default_value, bool pdo_mappable = false);
+  /// Adds (or replaces) a complete entry at its index and sub-index, e.g. a copy of another one.
+  OdEntry& add_entry(OdEntry entry);
   /// A VAR (single sub-index 0).
   OdEntry& add_var(std::uint16_t index, std::string name, DataType type, Access access, Bytes default_value,
                    bool pdo_mappable = false);
@@ -140,7 +146,10 @@ class ObjectDictionary {
                      T default_value, bool pdo_mappable = false) {
     return add_entry(index, sub, std::move(name), type, access, encode(type, default_value), pdo_mappable);
   }
-  void remove_object(std::uint16_t index) { objects_.erase(index); }
+  void remove_object(std::uint16_t index) {
+    objects_.erase(index);
+    cache_.clear();
+  }
   void remove_entry(std::uint16_t index, std::uint8_t sub);
 
   /// Encodes a typed value into `type`'s byte representation.
@@ -153,8 +162,14 @@ class ObjectDictionary {
   // --- lookup ---------------------------------------------------------------------------------
   OdObject* object(std::uint16_t index);
   const OdObject* object(std::uint16_t index) const;
-  OdEntry* entry(std::uint16_t index, std::uint8_t sub);
-  const OdEntry* entry(std::uint16_t index, std::uint8_t sub) const;
+  OdEntry* entry(std::uint16_t index, std::uint8_t sub) {
+    return const_cast<OdEntry*>(std::as_const(*this).entry(index, sub));
+  }
+  const OdEntry* entry(std::uint16_t index, std::uint8_t sub) const {
+    OdEntry* e;
+    if (cache_.find(EntryCache::key(index, sub), e)) return e;  // inline: the per-tick path
+    return find_entry(index, sub);
+  }
   const std::map<std::uint16_t, OdObject>& objects() const { return objects_; }
   /// NoObject / NoSubIndex / None.
   SdoAbort locate(std::uint16_t index, std::uint8_t sub, OdEntry*& out);
@@ -201,10 +216,12 @@ class ObjectDictionary {
   bool visible(std::uint16_t index) const { return !visibility_ || visibility_(index); }
 
  private:
+  const OdEntry* find_entry(std::uint16_t index, std::uint8_t sub) const;  // and cache it
   OdEntry& must_entry(std::uint16_t index, std::uint8_t sub);
   const OdEntry& must_entry(std::uint16_t index, std::uint8_t sub) const;
 
   std::map<std::uint16_t, OdObject> objects_;
+  mutable EntryCache cache_;  // entry() on every tick and frame: see entry_cache.h
   AccessAborts access_aborts_;
   Visibility visibility_;
 };
