@@ -166,7 +166,7 @@ class ObjectDictionary {
     return const_cast<OdEntry*>(std::as_const(*this).entry(index, sub));
   }
   const OdEntry* entry(std::uint16_t index, std::uint8_t sub) const {
-    OdEntry* e;
+    OdEntry* e = nullptr;
     if (cache_.find(EntryCache::key(index, sub), e)) return e;  // inline: the per-tick path
     return find_entry(index, sub);
   }

@@ -114,7 +114,7 @@ bool starts_number(std::string_view rest) {
 }  // namespace
 
 // expression := term (('+' | '-') term)*;  term := factor (('*' | '/') factor)*, at most one
-// factor a signal and no division by one;  factor := signal | number.
+// factor a signal and no division by a signal;  factor := signal | number.
 SignalExpr parse_signal(std::string_view text, const SourceMark& mark) {
   SignalExpr e;
   e.text = std::string(trim(text));
