@@ -248,7 +248,13 @@ int Runner::run() {
 
 int run_scenario_file(const std::string& path, const Environment& env, const RunOptions& options) {
   try {
-    const Scenario s = load_scenario_file(path);
+    Scenario s = load_scenario_file(path);
+    if (options.no_script) {
+      // The file's script and duration belong to its scripted master; without it, the run lasts
+      // until --duration or, in real time, until SIGINT/SIGTERM.
+      s.script.clear();
+      s.clock.duration.reset();
+    }
     Runner runner(s, env, options);
     return runner.run();
   } catch (const LoadError& e) {

@@ -28,6 +28,7 @@ namespace scenario {
 struct RunOptions {
   std::map<std::string, std::string> can;  ///< --can BUS=IFACE
   bool realtime = false;                   ///< --realtime
+  bool no_script = false;                  ///< --no-script: drop the script and clock.duration (an external master drives)
   std::optional<sim::Duration> duration;   ///< --duration
   std::optional<std::uint64_t> seed;       ///< --seed
   std::string trace, csv, junit;           ///< override the scenario's outputs

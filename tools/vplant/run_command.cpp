@@ -22,6 +22,7 @@ struct RunArgs {
   std::string scenario;
   std::vector<std::string> can;
   bool realtime = false;
+  bool no_script = false;
   std::string duration;
   long long seed = -1;
   std::string trace, csv, junit;
@@ -49,6 +50,7 @@ int run(const RunArgs& a) {
   }
   if (a.seed >= 0) o.seed = static_cast<std::uint64_t>(a.seed);
   o.realtime = a.realtime;
+  o.no_script = a.no_script;
   o.trace = a.trace;
   o.csv = a.csv;
   o.junit = a.junit;
@@ -66,6 +68,8 @@ Runner add_run_command(CLI::App& app) {
   app.add_option("scenario", a->scenario, "scenario file (YAML, see docs/scenarios.md)")->required();
   app.add_option("--can", a->can, "BUS=IFACE: put a scenario bus on a SocketCAN interface (repeatable)");
   app.add_flag("--realtime", a->realtime, "pace the run by the wall clock (default: virtual time, as fast as possible)");
+  app.add_flag("--no-script", a->no_script,
+               "leave out the file's script and duration: an external master drives the plant (until --duration or Ctrl-C)");
   app.add_option("--duration", a->duration, "simulated time to run, e.g. 10 or 2.5s (overrides clock.duration)");
   app.add_option("--seed", a->seed, "seed for noise and random faults (overrides clock.seed)")->check(CLI::NonNegativeNumber);
   app.add_option("--trace", a->trace, "write all frames in candump -L format");
