@@ -3,21 +3,8 @@
 
 #include "tests/tools/scenario/run_helper.h"
 
+using vtest::kMachine;
 using vtest::run_text;
-
-namespace {
-
-const std::string kMachine = R"(
-nodes:
-  - {name: ax, device: axis, node_id: 5}
-plant:
-  axis: {gain: 1.0}
-wires:
-  - {from: ax.velocity, to: axis.velocity_command}
-  - {from: axis.position, to: ax.position}
-)";
-
-}  // namespace
 
 TEST(ScriptedMaster, CommissionsAndMovesTheAxisThroughThePlant) {
   const auto r = run_text(kMachine + R"(

@@ -14,4 +14,15 @@ namespace vtest {
 /// The test environment: product "axis" (plus the registry's), plant section `axis: {gain, drift}`.
 scenario::Environment test_environment();
 
+/// One axis node (ID 5) wired to the axis plant: the start of most engine tests' scenarios.
+inline const std::string kMachine = R"(
+nodes:
+  - {name: ax, device: axis, node_id: 5}
+plant:
+  axis: {gain: 1.0}
+wires:
+  - {from: ax.velocity, to: axis.velocity_command}
+  - {from: axis.position, to: ax.position}
+)";
+
 }  // namespace vtest
