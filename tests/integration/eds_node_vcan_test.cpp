@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <gtest/gtest.h>
 
+#include "tests/support/temp_path.h"
 #include "tests/support/vcan_master.h"
 #include <linux/can.h>
 #include <linux/can/raw.h>
@@ -53,7 +54,7 @@ TEST(EdsNodeVcan, ServicesSaveKillRestart) {
   CanSocket can("vcan0");
   ASSERT_TRUE(can.ok()) << "no vcan0 (run through tools/vcan/vcan-run)";
   SdoClient sdo(can, kNode);
-  const std::string store = temp_path("vplant-eds-store");
+  const std::string store = vtest::unique_temp_path("vplant-eds-store");
   auto node = std::make_unique<Vplant>(node_args(store));
   ASSERT_TRUE(can.wait_for(is_boot_up, milliseconds(10000))) << "no boot-up 0x705 [00]\n" << node->stderr_text();
 
@@ -119,7 +120,7 @@ TEST(EdsNodeVcan, ServicesSaveKillRestart) {
 }
 
 TEST(EdsNodeVcan, BrokenEdsExitsWithFileAndLine) {
-  const std::string path = temp_path("vplant-broken") + ".eds";
+  const std::string path = vtest::unique_temp_path("vplant-broken", ".eds");
   {
     std::ofstream out(path);
     out << "[FileInfo]\nFileName=broken.eds\n[MandatoryObjects]\nSupportedObjects=one\n";

@@ -9,6 +9,7 @@
 #include "plant/plant_yaml.h"
 #include "plant/reference_plant.h"
 #include "plant_test_support.h"
+#include "tests/support/temp_path.h"
 
 namespace plant {
 namespace {
@@ -47,7 +48,7 @@ TEST(PlantYaml, EmittedYamlParsesBackToTheSameDescription) {
 
 // Parses `text` (a whole file with a `plant:` section) and returns the error message.
 std::string error_of(const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/bad.plant.yaml";
+  const std::string path = vtest::unique_temp_path("bad", ".plant.yaml");
   std::ofstream(path) << text;
   try {
     load_plant_file(path);
@@ -80,7 +81,7 @@ const char* kMinimal = R"(plant:
 )";
 
 TEST(PlantYaml, MinimalFileIsAccepted) {
-  const std::string path = ::testing::TempDir() + "/good.plant.yaml";
+  const std::string path = vtest::unique_temp_path("good", ".plant.yaml");
   std::ofstream(path) << kMinimal;
   const PlantDescription d = load_plant_file(path);
   EXPECT_EQ(d.components.size(), 4u);

@@ -203,13 +203,4 @@ std::string ChildProcess::stderr_text() const {
   return ss.str();
 }
 
-std::string temp_path(const char* stem) {
-  char path[96];
-  std::snprintf(path, sizeof(path), "/tmp/%s-XXXXXX", stem);
-  const int fd = ::mkstemp(path);
-  ::close(fd);
-  std::remove(path);
-  return path;
-}
-
 }  // namespace vtest::vcan

@@ -94,7 +94,4 @@ class ChildProcess {
   std::string stderr_path_;
 };
 
-/// A fresh path under /tmp (the file does not exist).
-std::string temp_path(const char* stem);
-
 }  // namespace vtest::vcan

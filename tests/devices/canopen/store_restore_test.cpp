@@ -9,18 +9,13 @@
 
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
+#include "tests/support/temp_path.h"
 
 using vtest::Frame;
 using vtest::Frames;
 
 namespace {
-std::string temp_path() {
-  char path[] = "/tmp/vplant-store-XXXXXX";
-  const int fd = mkstemp(path);
-  close(fd);
-  std::remove(path);
-  return path;
-}
+std::string temp_path() { return vtest::unique_temp_path("vplant-store"); }
 constexpr std::uint32_t kSave = 0x65766173, kLoad = 0x64616F6C;
 }  // namespace
 

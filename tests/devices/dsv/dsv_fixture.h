@@ -12,6 +12,7 @@
 
 #include "devices/dsv/dsv.h"
 #include "tests/support/canopen_harness.h"
+#include "tests/support/temp_path.h"
 
 namespace dsvtest {
 
@@ -24,11 +25,7 @@ inline std::map<std::string, std::string> bus_mode(std::map<std::string, std::st
   return s;
 }
 
-inline std::string temp_store(const std::string& name) {
-  const std::string path = ::testing::TempDir() + "dsv_" + name + ".store";
-  std::remove(path.c_str());
-  return path;
-}
+inline std::string temp_store(const std::string& name) { return vtest::unique_temp_path("dsv_" + name, ".store"); }
 
 class DsvTest : public ::testing::Test {
  protected:

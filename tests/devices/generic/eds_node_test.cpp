@@ -12,6 +12,7 @@
 
 #include "devices/canopen/eds.h"
 #include "tests/support/canopen_harness.h"
+#include "tests/support/temp_path.h"
 
 using vtest::Frame;
 using vtest::Frames;
@@ -20,14 +21,6 @@ namespace {
 
 const std::string kFixture = VPLANT_TEST_DATA_DIR "/eds/io_module.eds";
 constexpr std::uint32_t kSave = 0x65766173, kLoad = 0x64616F6C;
-
-std::string temp_path() {
-  char path[] = "/tmp/vplant-eds-node-XXXXXX";
-  const int fd = mkstemp(path);
-  close(fd);
-  std::remove(path);
-  return path;
-}
 
 Frame sdo_reply(std::initializer_list<std::uint8_t> bytes) { return Frame(0x585, bytes); }
 
@@ -344,7 +337,7 @@ TEST_F(EdsNodeTest, RpdosUpdateTheirMappedObjects) {
 // ---- non-volatile memory --------------------------------------------------------------------------
 
 TEST_F(EdsNodeTest, SavedValuesSurvivePowerCycleAndRestart) {
-  const std::string store = temp_path();
+  const std::string store = vtest::unique_temp_path("vplant-eds-node");
   boot(store);
   ASSERT_EQ(h->write(0x2000, 0, 42, 1), 0u);
   ASSERT_EQ(h->download(0x2002, 0, {'s', 'a', 'v', 'e', 'd', ' ', 'l', 'a', 'b', 'e', 'l'}), 0u);
@@ -379,7 +372,7 @@ TEST_F(EdsNodeTest, SavedValuesSurvivePowerCycleAndRestart) {
 // ---- loading ------------------------------------------------------------------------------------------
 
 TEST(EdsNodeLoad, BrokenFileNamesFileAndLine) {
-  const std::string path = temp_path() + ".eds";
+  const std::string path = vtest::unique_temp_path("vplant-eds-node", ".eds");
   {
     std::FILE* f = std::fopen(path.c_str(), "w");
     ASSERT_TRUE(f);

@@ -3,15 +3,12 @@
 #include <cstdio>
 
 #include "tests/devices/md2/md2_fixture.h"
+#include "tests/support/temp_path.h"
 
 namespace md2test {
 
 namespace {
-std::string temp_store(const char* name) {
-  const std::string path = ::testing::TempDir() + "md2_" + name + ".store";
-  std::remove(path.c_str());
-  return path;
-}
+std::string temp_store(const char* name) { return vtest::unique_temp_path(std::string("md2_") + name, ".store"); }
 }  // namespace
 
 TEST_F(Md2Test, C01_PowerOnSendsOneBootUpThenSilence) {

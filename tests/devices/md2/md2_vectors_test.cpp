@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "tests/devices/md2/md2_fixture.h"
+#include "tests/support/temp_path.h"
 
 namespace md2test {
 
@@ -337,8 +338,7 @@ TEST_F(Md2Test, B15_RampRunningBit) {
 }
 
 TEST_F(Md2Test, B16_RestoreAllThenResetCommunication) {
-  const std::string path = ::testing::TempDir() + "md2_b16.store";
-  std::remove(path.c_str());
+  const std::string path = vtest::unique_temp_path("md2_b16", ".store");
   make({}, "", 0, path);
   ASSERT_EQ(write(0x1017, 0, 500, 2), 0u);
   ASSERT_EQ(write(0x1010, 1, 0x65766173, 4), 0u);

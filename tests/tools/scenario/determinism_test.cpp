@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "tests/support/temp_path.h"
 #include "tests/tools/scenario/run_helper.h"
 
 namespace {
@@ -55,7 +56,7 @@ std::uint64_t trace_hash(std::uint64_t seed, const std::string& path) {
 }  // namespace
 
 TEST(Determinism, SameSeedGivesAByteIdenticalTrace) {
-  const std::string a = testing::TempDir() + "determinism_a.log", b = testing::TempDir() + "determinism_b.log";
+  const std::string a = vtest::unique_temp_path("determinism_a", ".log"), b = vtest::unique_temp_path("determinism_b", ".log");
   const auto ha = trace_hash(7, a);
   const auto hb = trace_hash(7, b);
   EXPECT_EQ(ha, hb);

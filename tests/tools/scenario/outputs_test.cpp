@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "tests/support/temp_path.h"
 #include "tests/tools/scenario/run_helper.h"
 #include "tools/scenario/plot.h"
 
@@ -46,7 +47,7 @@ script:
 }  // namespace
 
 TEST(Outputs, TraceCsvPlotAndJunit) {
-  const std::string dir = testing::TempDir() + "vplant-outputs";
+  const std::string dir = vtest::unique_temp_path("vplant-outputs");
   std::string text = kRun;
   for (auto p = text.find("OUT"); p != std::string::npos; p = text.find("OUT")) text.replace(p, 3, dir);
   const auto r = vtest::run_text(text);
