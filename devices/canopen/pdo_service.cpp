@@ -105,6 +105,14 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
       return allowed.test(data[0]) ? SdoAbort::None : p.bad_transmission_type;
     });
   }
+  if (dir == PdoDirection::Transmit && od.entry(comm_index, 6) && od.entry(comm_index, 6)->writable()) {
+    // CiA 301: SYNC start value 0..240, changed only while the PDO is invalid.
+    od.add_check(comm_index, 6, [pdo_valid](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+      if (!external(origin)) return SdoAbort::None;
+      if (data[0] > 240) return SdoAbort::ValueTooHigh;
+      return pdo_valid() ? SdoAbort::InvalidValue : SdoAbort::None;
+    });
+  }
 
   auto* map = od.object(map_index);
   for (auto& [sub, e] : map->entries) {
@@ -159,12 +167,18 @@ void PdoService::load(Pdo& p, PdoDirection dir) {
   }
 }
 
+void PdoService::load(Tpdo& t) {
+  load(t, PdoDirection::Transmit);
+  const auto* start = node_.od().entry(t.comm_index, 6);
+  t.sync_start = start ? start->as<std::uint8_t>() : 0;
+}
+
 void PdoService::reload() {
   for (auto& r : rpdos_) {
     load(r, PdoDirection::Receive);
     r.latched = false;
   }
-  for (auto& t : tpdos_) load(t, PdoDirection::Transmit);
+  for (auto& t : tpdos_) load(t);
 }
 
 std::vector<PdoService::Route> PdoService::rpdo_routes() const {
@@ -324,7 +338,7 @@ void PdoService::set_active(PdoDirection dir, int number, bool active) {
     for (auto& t : tpdos_) {
       if (t.number != number) continue;
       t.device_disabled = !active;
-      load(t, dir);
+      load(t);
       t.event_pending = false;
     }
   }
@@ -390,7 +404,7 @@ void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time n
   transmit(t, data, now);
 }
 
-void PdoService::on_sync(std::uint8_t /*counter*/, sim::Time now) {
+void PdoService::on_sync(std::uint8_t counter, sim::Time now) {
   if (!pdo_allowed(node_.nmt_state())) return;
   for (auto& r : rpdos_)
     if (r.valid && r.latched) apply_rpdo(r);
@@ -401,6 +415,15 @@ void PdoService::on_sync(std::uint8_t /*counter*/, sim::Time now) {
       sample(t, data);
       if (t.event_pending || !t.sent_once || data != t.last_sent) transmit(t, data, now);
     } else if (t.type <= 240) {
+      if (t.awaiting_start) {
+        // CiA 301: with a SYNC counter and a start value, the SYNC carrying that value is the
+        // first one counted; the PDO goes out on it and on every type-th SYNC after it.
+        if (counter != 0 && t.sync_start != 0) {
+          if (counter != t.sync_start) continue;
+          t.sync_count = static_cast<std::uint8_t>(t.type - 1);
+        }
+        t.awaiting_start = false;
+      }
       if (++t.sync_count >= t.type) {
         t.sync_count = 0;
         std::array<std::uint8_t, 8> data{};
@@ -421,6 +444,7 @@ void PdoService::on_enter_operational(sim::Time now) {
   }
   for (auto& t : tpdos_) {
     t.sync_count = 0;
+    t.awaiting_start = true;
     t.sent_once = false;
     t.has_sample = false;
     t.event_pending = false;

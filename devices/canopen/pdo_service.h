@@ -39,6 +39,7 @@ class PdoService {
 
   void on_rpdo(int number, const sim::CanFrame& frame, sim::Time now);
   void on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time now);
+  /// `counter`: the SYNC counter (1..0x1019), or 0 when SYNCs carry none.
   void on_sync(std::uint8_t counter, sim::Time now);
   void on_enter_operational(sim::Time now);
   /// Application event for TPDO n (types 0 and 254/255): sends now (or at the next SYNC for
@@ -81,6 +82,8 @@ class PdoService {
   };
   struct Tpdo : Pdo {
     std::uint8_t sync_count = 0;
+    std::uint8_t sync_start = 0;     ///< sub 6: first SYNC counter value that counts (0 = any)
+    bool awaiting_start = true;      ///< types 1-240: no SYNC has counted since Operational
     bool sent_once = false;
     bool event_pending = false;     ///< triggered, waiting for the inhibit time (or SYNC for type 0)
     sim::Time inhibit_until{};
@@ -92,6 +95,7 @@ class PdoService {
   };
 
   void load(Pdo& p, PdoDirection dir);
+  void load(Tpdo& t);  ///< load(t, Transmit) plus the TPDO-only SYNC start value
   void install_checks(std::uint16_t comm_index, std::uint16_t map_index, PdoDirection dir);
   void apply_rpdo(Rpdo& p);
   void sample(Tpdo& t, std::array<std::uint8_t, 8>& out);

@@ -26,6 +26,7 @@ void add_communication_objects(ObjectDictionary& od, const CommunicationProfile&
     }
   }
   if (p.sync) od.add_var(0x1005, "COB-ID SYNC", DT::Unsigned32, Access::ReadWrite, 0x80u);
+  if (p.sync_counter) od.add_var(0x1019, "Synchronous counter overflow value", DT::Unsigned8, Access::ReadWrite, 0);
   if (!p.device_name.empty()) {
     od.add_var(0x1008, "Manufacturer device name", DT::VisibleString, Access::Const, ObjectDictionary::encode(DT::VisibleString, p.device_name));
   }
@@ -125,13 +126,14 @@ void add_tpdo(ObjectDictionary& od, int number, const PdoDefaults& d) {
   const auto comm = static_cast<std::uint16_t>(0x1800 + number - 1);
   od.add_object(comm, "TPDO communication parameter", ObjectCode::Record);
   od.add_entry(comm, 0, "Highest sub-index supported", DT::Unsigned8, Access::ReadOnly,
-               static_cast<std::uint8_t>(d.with_inhibit_and_timer ? 5 : 2));
+               static_cast<std::uint8_t>(d.with_sync_start ? 6 : d.with_inhibit_and_timer ? 5 : 2));
   add_cob_entry(od, comm, d);
   od.add_entry(comm, 2, "Transmission type", DT::Unsigned8, Access::ReadWrite, d.transmission_type);
   if (d.with_inhibit_and_timer) {
     od.add_entry(comm, 3, "Inhibit time", DT::Unsigned16, Access::ReadWrite, d.inhibit_time);
     od.add_entry(comm, 5, "Event timer", DT::Unsigned16, Access::ReadWrite, d.event_timer);
   }
+  if (d.with_sync_start) od.add_entry(comm, 6, "SYNC start value", DT::Unsigned8, Access::ReadWrite, 0);
   add_mapping(od, static_cast<std::uint16_t>(0x1A00 + number - 1), "TPDO mapping parameter", d);
 }
 

@@ -24,6 +24,7 @@ struct CommunicationProfile {
 
   std::uint8_t error_history_depth = 8;  ///< 0x1003 (0 = absent)
   bool sync = true;                      ///< 0x1005
+  bool sync_counter = false;             ///< 0x1019 (synchronous counter overflow value, 0)
   bool guarding = true;                  ///< 0x100C, 0x100D
   std::uint8_t store_groups = 4;         ///< 0x1010/0x1011 sub-indices (0 = absent)
   bool emcy_cob_id = true;               ///< 0x1014
@@ -47,6 +48,7 @@ struct PdoDefaults {
   std::vector<std::uint32_t> mapping;  ///< entries index<<16 | sub<<8 | bits
   std::uint8_t mapping_capacity = 8;   ///< number of mapping sub-indices
   bool with_inhibit_and_timer = true;  ///< TPDO subs 3 and 5 (RPDO: sub 5 only if event timer)
+  bool with_sync_start = false;        ///< TPDO sub 6 (SYNC start value, 0)
 };
 
 /// RPDO n (1-based): 0x1400+n-1 and 0x1600+n-1.

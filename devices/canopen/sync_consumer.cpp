@@ -1,12 +1,14 @@
 #include "devices/canopen/sync_consumer.h"
 
+#include "devices/canopen/emergency.h"
 #include "devices/canopen/node.h"
 #include "devices/canopen/pdo_service.h"
 
 namespace canopen {
 
 namespace {
-constexpr std::uint16_t kCobIdSync = 0x1005;
+constexpr std::uint16_t kCobIdSync = 0x1005, kCommunicationCyclePeriod = 0x1006, kCounterOverflow = 0x1019;
+constexpr std::uint16_t kEmcySyncLength = 0x8240;  // CiA 301: unexpected SYNC data length
 }
 
 void SyncConsumer::bind_objects() {
@@ -20,6 +22,22 @@ void SyncConsumer::bind_objects() {
     return SdoAbort::None;
   });
   od.add_observer(kCobIdSync, 0, [this](OdEntry&, Origin) { node_.rebuild_dispatch(); });
+  bind_counter_overflow();
+}
+
+void SyncConsumer::bind_counter_overflow() {
+  auto& od = node_.od();
+  overflow_ = od.entry(kCounterOverflow, 0);
+  if (!overflow_ || !overflow_->writable()) return;
+  // CiA 301 §7.5.2.22: 1 and 241..255 are reserved; the value may change only while the
+  // communication cycle period (0x1006, if present) is 0, i.e. while this node produces no SYNC.
+  od.add_check(kCounterOverflow, 0, [this](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+    if (origin != Origin::Sdo) return SdoAbort::None;
+    if (data[0] == 1 || data[0] > 240) return SdoAbort::InvalidValue;
+    const auto* period = node_.od().entry(kCommunicationCyclePeriod, 0);
+    if (period && period->as<std::uint32_t>() != 0) return SdoAbort::DataDeviceState;
+    return SdoAbort::None;
+  });
 }
 
 std::uint32_t SyncConsumer::cob_id() const {
@@ -36,9 +54,20 @@ bool SyncConsumer::extended() const {
 void SyncConsumer::on_frame(const sim::CanFrame& frame, sim::Time now) {
   if (frame.rtr || !sync_allowed(node_.nmt_state())) return;
   if (node_.policy().pdo.sync_requires_dlc0 && frame.dlc != 0) return;
+  std::uint8_t pdo_counter = 0;  // 0: no counter for the TPDOs' start values
+  if (overflow_) {
+    const std::uint8_t overflow = overflow_->as<std::uint8_t>();
+    auto& emcy = node_.emergency();
+    if (frame.dlc != (overflow == 0 ? 0 : 1)) {
+      emcy.raise(kEmcySyncLength, node_.policy().error_control.communication_error_register);
+      return;
+    }
+    emcy.clear(kEmcySyncLength);
+    if (overflow != 0) pdo_counter = frame.data[0];
+  }
   const std::uint8_t counter = frame.dlc >= 1 ? frame.data[0] : 0;
   ++count_;
-  node_.pdo().on_sync(counter, now);
+  node_.pdo().on_sync(pdo_counter, now);
   node_.app().on_sync(counter);
 }
 

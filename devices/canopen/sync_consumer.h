@@ -1,8 +1,12 @@
 // SYNC consumer (CiA 301 §7.2.5, objects 0x1005 and optionally 0x1019): triggers synchronous
-// PDOs and tells the device.
+// PDOs and tells the device. With 0x1019 in the dictionary the SYNC length is checked against it
+// (0: no data; 2..240: one counter byte) and a SYNC of the wrong length raises EMCY 0x8240
+// instead of being acted on; the counter then reaches the TPDOs' SYNC start values (sub 6).
 #pragma once
 
 #include <cstdint>
+
+#include "devices/canopen/object_dictionary.h"
 
 #include "sim/can_frame.h"
 #include "sim/time.h"
@@ -20,9 +24,14 @@ class SyncConsumer {
   bool extended() const;
   void on_frame(const sim::CanFrame& frame, sim::Time now);
   std::uint64_t count() const { return count_; }
+  /// 0x1019: 0 = SYNC without counter (also when the object is absent), else 2..240.
+  std::uint8_t counter_overflow() const { return overflow_ ? overflow_->as<std::uint8_t>() : 0; }
 
  private:
+  void bind_counter_overflow();
+
   Node& node_;
+  const OdEntry* overflow_ = nullptr;  ///< 0x1019, if the dictionary has it
   std::uint64_t count_ = 0;
 };
 

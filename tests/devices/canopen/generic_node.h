@@ -1,5 +1,6 @@
 // A small generic node used by the stack tests: the standard communication area, two PDOs and a
-// few application objects of every access kind.
+// few application objects of every access kind. `sync_counter` adds 0x1019 and TPDO2's SYNC start
+// value (0x1801:06).
 #pragma once
 
 #include "devices/canopen/object_dictionary.h"
@@ -7,7 +8,7 @@
 
 namespace vtest {
 
-inline canopen::ObjectDictionary make_generic_od() {
+inline canopen::ObjectDictionary make_generic_od(bool sync_counter = false) {
   using namespace canopen;
   using DT = DataType;
   ObjectDictionary od;
@@ -19,6 +20,7 @@ inline canopen::ObjectDictionary make_generic_od() {
   p.serial = 0x00C0FFEE;
   p.device_name = "vplant generic node";
   p.error_behaviour = true;
+  p.sync_counter = sync_counter;
   add_communication_objects(od, p);
   od.add_var(0x2000, "U8 rw", DT::Unsigned8, Access::ReadWrite, 7);
   auto& limited = od.add_var(0x2001, "I16 rw limited", DT::Integer16, Access::ReadWrite, -5);
@@ -36,6 +38,7 @@ inline canopen::ObjectDictionary make_generic_od() {
   PdoDefaults tpdo1{.cob_base = 0x180, .transmission_type = 255, .mapping = {0x60000010, 0x60020008}};
   add_tpdo(od, 1, tpdo1);
   PdoDefaults tpdo2{.cob_base = 0x280, .transmission_type = 1, .mapping = {0x60010020}};
+  tpdo2.with_sync_start = sync_counter;
   add_tpdo(od, 2, tpdo2);
   PdoDefaults rpdo1{.cob_base = 0x200, .transmission_type = 255, .mapping = {0x60010020, 0x60000010}};
   add_rpdo(od, 1, rpdo1);

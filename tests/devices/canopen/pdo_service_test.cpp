@@ -73,6 +73,131 @@ TEST_F(PdoTest, SyncTpdoEveryNthSync) {
   EXPECT_TRUE(h.take().empty());
 }
 
+TEST_F(PdoTest, Type252SendsOnRemoteRequestWhatTheLastSyncSampled) {
+  ASSERT_EQ(h.write(0x1801, 2, 252, 1), 0u);
+  operational();
+  h.take();
+  h.node().od().set<std::int32_t>(0x6001, 0, 7);
+  h.send(0x080, {});
+  EXPECT_TRUE(h.take().empty());  // sampled, not sent
+  h.node().od().set<std::int32_t>(0x6001, 0, 9);
+  h.send(Frame::remote(0x285, 4));
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x07, 0, 0, 0})});
+  h.send(0x080, {});
+  h.send(Frame::remote(0x285, 4));
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x09, 0, 0, 0})});
+}
+
+TEST_F(PdoTest, Type253SendsOnRemoteRequestOnlyWithCurrentData) {
+  ASSERT_EQ(h.write(0x1801, 2, 253, 1), 0u);
+  operational();
+  h.take();
+  h.node().od().set<std::int32_t>(0x6001, 0, 7);
+  h.send(0x080, {});
+  h.run_ms(50);
+  EXPECT_TRUE(h.take().empty());  // neither SYNC nor time nor a change sends it
+  h.node().od().set<std::int32_t>(0x6001, 0, 8);
+  h.send(Frame::remote(0x285, 4));
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x08, 0, 0, 0})});
+}
+
+TEST_F(PdoTest, Type254IsEventDrivenLike255) {
+  ASSERT_EQ(h.write(0x1800, 2, 254, 1), 0u);
+  ASSERT_EQ(h.write(0x1800, 5, 30, 2), 0u);
+  operational();
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x34, 0x12, 0x55})});
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0, 0, 0, 0})});  // only TPDO2 (type 1) answers a SYNC
+  h.node().od().set<std::uint8_t>(0x6002, 0, 0x56);
+  h.run_ticks(1);
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x34, 0x12, 0x56})});
+  h.run_ms(30);
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x34, 0x12, 0x56})});  // event timer
+}
+
+namespace {
+// Node 5 with 0x1019 and TPDO2 (0x285, 0x6001) carrying a SYNC start value.
+class SyncCounterTest : public ::testing::Test {
+ protected:
+  SyncCounterTest() : h(vtest::make_generic_od(true), {}, 5) {
+    h.power_on();
+    h.take();
+  }
+  void sync(std::uint8_t counter) { h.send(0x080, {counter}); }
+  vtest::CanopenHarness h;
+};
+}  // namespace
+
+TEST_F(SyncCounterTest, OverflowValueRejectsReservedValues) {
+  EXPECT_EQ(h.write(0x1019, 0, 1, 1), 0x06090030u);
+  EXPECT_EQ(h.write(0x1019, 0, 241, 1), 0x06090030u);
+  EXPECT_EQ(h.write(0x1019, 0, 240, 1), 0u);
+  EXPECT_EQ(h.write(0x1019, 0, 0, 1), 0u);
+}
+
+TEST_F(SyncCounterTest, StartValueIsWrittenOnlyWhileThePdoIsInvalid) {
+  EXPECT_EQ(h.write(0x1801, 6, 3, 1), 0x06090030u);  // PDO valid
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);
+  EXPECT_EQ(h.write(0x1801, 6, 241, 1), 0x06090031u);
+  EXPECT_EQ(h.write(0x1801, 6, 3, 1), 0u);
+  EXPECT_EQ(h.read(0x1801, 6), std::vector<std::uint8_t>{3});
+}
+
+TEST_F(SyncCounterTest, FirstTransmissionWaitsForTheStartValueThenEveryNth) {
+  ASSERT_EQ(h.write(0x1019, 0, 4, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);
+  ASSERT_EQ(h.write(0x1801, 2, 2, 1), 0u);  // every 2nd SYNC
+  ASSERT_EQ(h.write(0x1801, 6, 3, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x00000285, 4), 0u);
+  h.node().od().set<std::int32_t>(0x6001, 0, 5);
+  h.nmt(0x01, 5);
+  h.run_ticks(1);
+  h.take();  // TPDO1 (event-driven) on entering Operational
+  const Frame tpdo2(0x285, {0x05, 0, 0, 0});
+  std::vector<bool> sent;
+  for (std::uint8_t counter : {1, 2, 3, 4, 1, 2, 3, 4}) {
+    sync(counter);
+    const Frames out = h.take();
+    EXPECT_LE(out.size(), 1u);
+    sent.push_back(out == Frames{tpdo2});
+  }
+  // Counter 3 is the first SYNC counted: sent on it, then on every 2nd SYNC after it.
+  EXPECT_EQ(sent, (std::vector<bool>{false, false, true, false, true, false, true, false}));
+}
+
+TEST_F(SyncCounterTest, WithoutAStartValueTheFirstSyncCounts) {
+  ASSERT_EQ(h.write(0x1019, 0, 4, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 2, 2, 1), 0u);
+  h.nmt(0x01, 5);
+  h.run_ticks(1);
+  h.take();
+  sync(3);
+  EXPECT_TRUE(h.take().empty());
+  sync(4);
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0, 0, 0, 0})});
+}
+
+TEST_F(SyncCounterTest, SyncOfTheWrongLengthRaisesEmcy8240AndIsNotActedOn) {
+  h.nmt(0x01, 5);
+  h.run_ticks(1);
+  h.take();
+  // 0x1019 = 0: a SYNC carries no data.
+  sync(1);
+  EXPECT_EQ(h.take(), Frames{Frame(0x085, {0x40, 0x82, 0x11, 0, 0, 0, 0, 0})});  // no TPDO2
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), (Frames{Frame(0x085, {0x00, 0x00, 0x00, 0, 0, 0, 0, 0}), Frame(0x285, {0, 0, 0, 0})}));
+  // 0x1019 = 4: a SYNC carries the counter.
+  h.nmt(0x80, 5);
+  ASSERT_EQ(h.write(0x1019, 0, 4, 1), 0u);
+  h.nmt(0x01, 5);
+  h.run_ticks(1);
+  h.take();
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x085, {0x40, 0x82, 0x11, 0, 0, 0, 0, 0})});
+  sync(1);
+  EXPECT_EQ(h.take(), (Frames{Frame(0x085, {0x00, 0x00, 0x00, 0, 0, 0, 0, 0}), Frame(0x285, {0, 0, 0, 0})}));
+}
+
 TEST_F(PdoTest, RpdoWritesMappedObjectsAndSynchronousRpdoWaitsForSync) {
   operational();
   h.take();
