@@ -1,8 +1,15 @@
 #include "sim/scheduler.h"
 
 #include <gtest/gtest.h>
+#include <linux/can.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
+#include <thread>
 #include <vector>
+
+#include "sim/bus.h"
+#include "sim/socketcan_transport.h"
 
 namespace {
 
@@ -78,4 +85,69 @@ TEST(Scheduler, RealTimeKeepsPaceAndStops) {
   s.request_stop();
   s.run_ticks(5);
   EXPECT_EQ(s.stats().ticks, 20u);
+}
+
+namespace {
+// Sleeps through one chosen tick, as an overloaded component would.
+struct Stall : sim::Steppable {
+  std::uint64_t ticks = 0, stall_at = 0;
+  std::chrono::milliseconds length{0};
+  void step(Time, Duration) override {
+    if (ticks++ == stall_at) std::this_thread::sleep_for(length);
+  }
+};
+
+struct TickCounter : sim::Steppable {
+  std::uint64_t ticks = 0;
+  void step(Time, Duration) override { ++ticks; }
+};
+
+// Records, for each frame, how many ticks had run when it was handled.
+struct ArrivalLog : sim::FrameReceiver {
+  const TickCounter* counter = nullptr;
+  std::vector<std::uint64_t> at_tick;
+  void on_frame(const CanFrame&, Time) override { at_tick.push_back(counter->ticks); }
+};
+}  // namespace
+
+TEST(Scheduler, RealTimeCountsOverrunsAndLateness) {
+  // A 6 ms stall in a 1 ms tick: the next tick starts at least 5 ms after its deadline, however
+  // fast or slow the machine is.
+  sim::Scheduler s(sim::milliseconds(1), sim::ClockMode::RealTime);
+  Stall stall;
+  stall.stall_at = 3;
+  stall.length = std::chrono::milliseconds(6);
+  s.add(&stall);
+  s.run_ticks(10);
+  EXPECT_GE(s.stats().overruns, 1u);
+  EXPECT_GE(s.stats().max_lateness, sim::milliseconds(5));
+  EXPECT_EQ(s.stats().ticks, 10u);
+}
+
+TEST(Scheduler, RealTimeHandlesAFrameWhenItArrivesNotAtTheNextTick) {
+  // A socketpair stands in for a CAN socket (same record format). Ticks are 300 ms long; the
+  // frame is written 30 ms into the first tick's wait and must be handled before tick 2 starts.
+  int fds[2];
+  ASSERT_EQ(socketpair(AF_UNIX, SOCK_SEQPACKET | SOCK_NONBLOCK, 0, fds), 0);
+  sim::Bus bus("main");
+  bus.set_transport(sim::SocketCanTransport::adopt("pair0", fds[0]));
+  TickCounter counter;
+  ArrivalLog log;
+  log.counter = &counter;
+  bus.attach(&log);
+  sim::Scheduler s(sim::milliseconds(300), sim::ClockMode::RealTime);
+  s.add_bus(&bus);
+  s.add(&counter);
+  std::thread peer([fd = fds[1]] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    can_frame raw{};
+    raw.can_id = 0x605;
+    raw.can_dlc = 1;
+    EXPECT_EQ(write(fd, &raw, sizeof raw), static_cast<ssize_t>(sizeof raw));
+  });
+  s.run_ticks(2);
+  peer.join();
+  close(fds[1]);
+  EXPECT_EQ(log.at_tick, std::vector<std::uint64_t>{1});  // after tick 1's step, before tick 2's
+  EXPECT_EQ(s.stats().frames_between_ticks, 1u);
 }
