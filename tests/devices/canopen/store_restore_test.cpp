@@ -112,8 +112,11 @@ TEST(ParameterStore, KillDuringSaveLeavesOldOrNewSetNeverTorn) {
   std::string error;
   ASSERT_TRUE(store.save(error)) << error;
   // Children write a large new set and are killed at random moments; the file always parses
-  // and holds either the complete old or the complete new set.
-  for (int round = 0; round < 20; ++round) {
+  // and holds either the complete old or the complete new set. The last round is killed only
+  // once the new set is in the file, so the test also shows that a save completes whole.
+  bool saw_new = false;
+  for (int round = 0; round < 21; ++round) {
+    const bool last = round == 20;
     const pid_t pid = fork();
     ASSERT_GE(pid, 0);
     if (pid == 0) {
@@ -124,7 +127,16 @@ TEST(ParameterStore, KillDuringSaveLeavesOldOrNewSetNeverTorn) {
         big.save(e);
       }
     }
-    usleep(static_cast<useconds_t>(200 + round * 150));
+    if (last) {
+      for (int wait_ms = 0; wait_ms < 20000; ++wait_ms) {
+        canopen::ParameterStore probe(path);
+        std::string e;
+        if (probe.load(e) && probe.values().size() == 5000) break;
+        usleep(1000);
+      }
+    } else {
+      usleep(static_cast<useconds_t>(200 + round * 150));
+    }
     kill(pid, SIGKILL);
     int status = 0;
     waitpid(pid, &status, 0);
@@ -132,7 +144,9 @@ TEST(ParameterStore, KillDuringSaveLeavesOldOrNewSetNeverTorn) {
     ASSERT_TRUE(check.load(error)) << error;
     const auto n = check.values().size();
     EXPECT_TRUE(n == 1 || n == 5000) << n;
+    saw_new = saw_new || n == 5000;
   }
+  EXPECT_TRUE(saw_new);
   std::remove(path.c_str());
   std::remove((path + ".tmp").c_str());
 }
