@@ -9,10 +9,16 @@ work=$(mktemp -d)
 trap 'kill "$pid" 2>/dev/null; rm -rf "$work"' EXIT
 fail() { echo "FAIL: $*"; echo "--- vplant stderr:"; cat "$work/err"; exit 1; }
 
+# The boot-up frame is sent once, at start: listen for it before the node starts (and give
+# candump, under emulation, a moment to bind its socket).
+timeout 30 candump -n 1 -L vcan0,705:7FF >"$work/boot" &
+dump=$!
+sleep 1
 "$vplant" node --eds "$eds" --node-id 5 --can vcan0 2>"$work/err" &
 pid=$!
 # Wait for the boot-up frame, then switch the heartbeat on (100 ms).
-timeout 20 candump -n 1 -L vcan0,705:7FF >"$work/boot" || fail "no boot-up frame"
+wait "$dump" || fail "no boot-up frame"
+grep -q "705#00" "$work/boot" || fail "first frame is not the boot-up: $(cat "$work/boot")"
 cansend vcan0 605#2B17100064000000
 timeout 20 candump -n 3 -L vcan0,705:7FF >"$work/hb1" || fail "no heartbeat before the link went down"
 grep -q "705#7F" "$work/hb1" || fail "heartbeat not in pre-operational: $(cat "$work/hb1")"
