@@ -1,56 +1,16 @@
 // Nothing allocates per frame: once a node runs, receiving and answering SYNC, RPDOs, SDO
 // requests (expedited and segmented) and sending TPDOs, heartbeats and SDO replies makes no heap
 // allocation - not in the stack, not on the bus, not in the scheduler.
-//
-// Normal builds count every malloc/calloc/realloc of the process (the test binary interposes
-// them over glibc's). Under AddressSanitizer, which owns malloc, only operator new is counted.
+// (tests/support/counting_allocator.h says what is counted.)
 #include <gtest/gtest.h>
 
 #include <array>
-#include <atomic>
-#include <cstdlib>
-#include <new>
 
 #include "devices/canopen/node.h"
 #include "sim/bus.h"
 #include "sim/scheduler.h"
 #include "tests/devices/canopen/generic_node.h"
-
-namespace {
-std::atomic<long> g_allocations{0};
-}
-
-#if defined(__SANITIZE_ADDRESS__)
-void* operator new(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-// GCC cannot see that these pair with the operator new above.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-#pragma GCC diagnostic pop
-#else
-extern "C" {
-void* __libc_malloc(std::size_t);
-void* __libc_calloc(std::size_t, std::size_t);
-void* __libc_realloc(void*, std::size_t);
-void* malloc(std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_malloc(size);
-}
-void* calloc(std::size_t n, std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_calloc(n, size);
-}
-void* realloc(void* p, std::size_t size) {
-  g_allocations.fetch_add(1, std::memory_order_relaxed);
-  return __libc_realloc(p, size);
-}
-}
-#endif
+#include "tests/support/counting_allocator.h"
 
 namespace {
 
@@ -66,9 +26,9 @@ struct CountingMaster : sim::FrameReceiver {
 };
 
 TEST(HotPath, ServingFramesDoesNotAllocate) {
-  const long at_start = g_allocations.load();
+  const long at_start = vtest::allocation_count();
   canopen::Node node("node5", vtest::make_generic_od(), {}, 5);
-  ASSERT_GT(g_allocations.load() - at_start, 100) << "the counting hook must see the node being built";
+  ASSERT_GT(vtest::allocation_count() - at_start, 100) << "the counting hook must see the node being built";
   sim::Bus bus("main");
   CountingMaster master;
   const int master_ep = bus.attach(&master);
@@ -103,10 +63,10 @@ TEST(HotPath, ServingFramesDoesNotAllocate) {
   for (int k = 0; k < 100; ++k) traffic(k);  // warm-up: buffers reach their working size
 
   const auto before = master.by_id;
-  const long allocations_before = g_allocations.load();
+  const long allocations_before = vtest::allocation_count();
   constexpr int kTicks = 2000;
   for (int k = 0; k < kTicks; ++k) traffic(k);
-  const long allocations = g_allocations.load() - allocations_before;
+  const long allocations = vtest::allocation_count() - allocations_before;
 
   // The traffic really happened: every SYNC answered, every SDO request answered, heartbeats.
   EXPECT_EQ(master.by_id[0x285] - before[0x285], kTicks);
