@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -139,7 +140,9 @@ TEST(DifferentialCylinder, StribeckFrictionNearTheStribeckVelocity) {
     run(p, 1.0);
     const double v = port(p, "cyl.velocity");
     const double friction = port(p, "cyl.hydraulic_force") - cv * v;
-    RecordProperty("speed_error_" + std::to_string(ratio), figure(relative_error(v, v_expected)));
+    char name[40];
+    std::snprintf(name, sizeof name, "speed_error_at_%.1f_vs", ratio);
+    RecordProperty(name, figure(relative_error(v, v_expected)));
     EXPECT_LT(relative_error(v, v_expected), 0.002) << ratio << " v_s: " << v << " m/s";
     EXPECT_NEAR(friction, dry(v), 0.5) << ratio << " v_s";
     EXPECT_NEAR(friction, dry(v_expected), 0.5) << ratio << " v_s";
