@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -113,6 +114,38 @@ TEST(DifferentialCylinder, StaticFrictionHoldsAndCoulombPlusViscousLimitSpeed) {
     run(p, 1.0);
     RecordProperty("sliding_speed_error", figure(relative_error(port(p, "cyl.velocity"), 0.2)));
     EXPECT_LT(relative_error(port(p, "cyl.velocity"), 0.2), 0.01);
+  }
+}
+
+TEST(DifferentialCylinder, StribeckFrictionNearTheStribeckVelocity) {
+  // The dry friction of the reference seals, F_dry(v) = F_c + (F_s - F_c) exp(-(v/v_s)^2)
+  // (F_s 400 N, F_c 250 N, v_s 0.01 m/s), at 0.5, 1, 1.5, 2 and 3 v_s. With the chambers held at
+  // fixed pressures the rod slides at the speed where A_A p_A = c_v v + F_dry(v). The curve's
+  // steepest fall is (F_s - F_c) sqrt(2/e) / v_s = 12 900 N s/m, more than the reference viscous
+  // 1500 N s/m: with a constant force the speeds below about 2 v_s would be no equilibrium (stick-
+  // slip). The viscous coefficient is raised to 20 000 N s/m so that every speed is a stable one;
+  // the dry-friction curve under test is the reference one.
+  // Checked: the steady speed is the one the formula predicts (within 0.2 %), and the friction
+  // force the rod feels there, A_A p_A - c_v v, equals F_dry(v) within 0.5 N (0.2 % of F_c). The
+  // tolerance discriminates the curve's shape: exp(-|v|/v_s) instead of the Gaussian would be off
+  // by 26 N at 0.5 v_s and by 18 N at 2 v_s.
+  const double fs = 400.0, fc = 250.0, vs = 0.01, cv = 20000.0;
+  const auto dry = [&](double v) { return fc + (fs - fc) * std::exp(-(v / vs) * (v / vs)); };
+  for (double ratio : {0.5, 1.0, 1.5, 2.0, 3.0}) {
+    const double v_expected = ratio * vs;
+    const double force = cv * v_expected + dry(v_expected);
+    ASSERT_GT(force, fs) << "it must break away";
+    Plant p(pressed_cylinder(force / kAreaA, 0.0));
+    ASSERT_TRUE(p.set_parameter("cyl.viscous_friction", cv));
+    run(p, 1.0);
+    const double v = port(p, "cyl.velocity");
+    const double friction = port(p, "cyl.hydraulic_force") - cv * v;
+    char name[40];
+    std::snprintf(name, sizeof name, "speed_error_at_%.1f_vs", ratio);
+    RecordProperty(name, figure(relative_error(v, v_expected)));
+    EXPECT_LT(relative_error(v, v_expected), 0.002) << ratio << " v_s: " << v << " m/s";
+    EXPECT_NEAR(friction, dry(v), 0.5) << ratio << " v_s";
+    EXPECT_NEAR(friction, dry(v_expected), 0.5) << ratio << " v_s";
   }
 }
 

@@ -86,7 +86,7 @@ Runner::Runner(const Scenario& scenario, const Environment& env, const RunOption
   bool realtime = options.realtime || scenario.clock.mode == ClockSpec::Mode::RealTime ||
                   (scenario.clock.mode == ClockSpec::Mode::Auto && m.world->any_socketcan());
   if (!m.duration && !m.master->has_script() && !realtime)
-    throw LoadError(SourceMark{scenario.file, 0, 0},
+    throw LoadError(scenario.clock.mark.line > 0 ? scenario.clock.mark : SourceMark{scenario.file, 0, 0},
                     "nothing ends this run: give the clock a duration (or --duration), a script, or run in real time");
 
   // Outputs: the command line overrides the file.

@@ -67,6 +67,7 @@ struct ClockSpec {
   sim::Duration tick = sim::milliseconds(1);
   std::optional<sim::Duration> duration;
   std::uint64_t seed = 1;
+  SourceMark mark;  ///< the `clock:` section, else the top-level mapping ("nothing ends this run")
 };
 
 // ---- outputs ------------------------------------------------------------------------------------

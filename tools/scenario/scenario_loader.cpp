@@ -252,7 +252,11 @@ Scenario parse_scenario(const std::string& text, const std::string& file, const 
     s.plant_mark = mark_of(p, file);
   }
   if (auto w = r.get("wires")) s.wires = read_wires(w, file);
-  if (auto c = r.get("clock")) s.clock = read_clock(c, file);
+  s.clock.mark = r.mark();
+  if (auto c = r.get("clock")) {
+    s.clock = read_clock(c, file);
+    s.clock.mark = mark_of(c, file);
+  }
   if (auto o = r.get("outputs")) s.outputs = read_outputs(o, file);
   if (auto sc = r.get("script")) s.script = read_script(sc, file);
   if (auto f = r.get("faults")) s.faults = read_faults(f, file);

@@ -267,18 +267,25 @@ StepAction read_action(const std::string& kind, const YAML::Node& v, const std::
     MapReader r(v, file, kind);
     SendStep s;
     const auto id = read_integer(r.require("id"), file, "id", 0, 0x1FFFFFFF);
-    s.frame.id = static_cast<std::uint32_t>(id);
-    s.frame.extended = id > 0x7FF;
-    if (auto e = r.get("extended")) s.frame.extended = read_bool(e, file, "extended");
-    if (auto rtr = r.get("rtr")) {
-      s.frame.rtr = true;
-      s.frame.dlc = static_cast<std::uint8_t>(read_integer(rtr, file, "rtr", 0, 8));
-    }
+    // The payload first, then the flags: building the data frame must not reset an explicit
+    // `extended` (an 11-bit ID sent as a 29-bit frame) or `rtr`.
     if (auto d = r.get("data")) {
       const auto bytes = read_bytes(d, file, "data");
       if (bytes.size() > 8) throw LoadError(mark_of(d, file), "data: at most 8 bytes");
-      s.frame = sim::CanFrame::data_frame(s.frame.id, bytes);
-      s.frame.extended = id > 0x7FF;
+      s.frame = sim::CanFrame::data_frame(static_cast<std::uint32_t>(id), bytes);
+    }
+    s.frame.id = static_cast<std::uint32_t>(id);
+    s.frame.extended = id > 0x7FF;
+    if (auto e = r.get("extended")) {
+      s.frame.extended = read_bool(e, file, "extended");
+      if (!s.frame.extended && id > 0x7FF)
+        throw LoadError(mark_of(e, file), "extended: false with an ID above 0x7FF");
+    }
+    if (auto rtr = r.get("rtr")) {
+      if (r.has("data"))
+        throw LoadError(r.key_mark("rtr"), "rtr: a remote frame carries no data (give rtr or data)");
+      s.frame.rtr = true;
+      s.frame.dlc = static_cast<std::uint8_t>(read_integer(rtr, file, "rtr", 0, 8));
     }
     r.finish();
     summary = kind + " " + sim::to_candump(s.frame);

@@ -165,3 +165,46 @@ TEST(Durations, UnitsAndRates) {
   EXPECT_EQ(*parse_integer("0b101"), 5);
   EXPECT_FALSE(parse_integer("12a"));
 }
+
+// `send`: the payload and the flags are independent. `data:` must not reset an explicit
+// `extended: true` on an 11-bit ID; `rtr:` is kept; rtr with data is rejected (a remote frame
+// carries no data), as is `extended: false` on a 29-bit ID.
+TEST(ScriptLoader, SendKeepsExtendedAndRtr) {
+  const auto s = parse_scenario(R"(
+script:
+  - send: {id: 0x123, data: "01 02", extended: true}
+  - send: {id: 0x123, data: "01 02"}
+  - send: {id: 0x12345, data: "0A"}
+  - send: {id: 0x185, rtr: 4}
+  - send: {id: 0x185, rtr: 2, extended: true}
+  - rpdo: {id: 0x205, data: "0F 00", extended: true}
+)",
+                                "send.yaml", ".");
+  ASSERT_EQ(s.script.size(), 6u);
+  const auto frame = [&](std::size_t i) { return std::get<SendStep>(s.script[i].action).frame; };
+  EXPECT_EQ(frame(0).id, 0x123u);
+  EXPECT_TRUE(frame(0).extended);
+  EXPECT_FALSE(frame(0).rtr);
+  EXPECT_EQ(frame(0).dlc, 2);
+  EXPECT_EQ(frame(0).data[1], 0x02);
+  EXPECT_FALSE(frame(1).extended);
+  EXPECT_TRUE(frame(2).extended);
+  EXPECT_EQ(frame(2).dlc, 1);
+  EXPECT_TRUE(frame(3).rtr);
+  EXPECT_FALSE(frame(3).extended);
+  EXPECT_EQ(frame(3).dlc, 4);
+  EXPECT_TRUE(frame(4).rtr);
+  EXPECT_TRUE(frame(4).extended);
+  EXPECT_EQ(frame(4).dlc, 2);
+  EXPECT_TRUE(frame(5).extended);
+  EXPECT_EQ(frame(5).dlc, 2);
+
+  EXPECT_THROW(parse_scenario("script:\n  - send: {id: 0x185, rtr: 4, data: \"01\"}\n", "x.yaml", "."), LoadError);
+  EXPECT_THROW(parse_scenario("script:\n  - send: {id: 0x12345, extended: false}\n", "x.yaml", "."), LoadError);
+  try {
+    parse_scenario("script:\n  - send: {id: 0x185, data: \"01\", rtr: 4}\n", "x.yaml", ".");
+    ADD_FAILURE() << "rtr with data accepted";
+  } catch (const LoadError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("x.yaml:2:", 0), 0u) << e.what();
+  }
+}
