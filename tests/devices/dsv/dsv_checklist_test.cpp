@@ -83,10 +83,20 @@ TEST_F(DsvTest, C11_LifeGuardingTimeout) {
   h->send(Frame::remote(0x701, 1));
   h->take();
   const auto t0 = h->now();
-  h->run_ms(400);
-  const auto frames = h->take();
+  // One tick (1 ms) at a time up to 400 ms of silence: the first frame and the tick that sent it.
+  Frames frames;
+  sim::Duration at{};
+  while (frames.empty() && h->now() - t0 < sim::milliseconds(400)) {
+    at = h->now() - t0;
+    h->run_ms(1);
+    frames = h->take();
+  }
   EXPECT_EQ(frames, Frames{Frame(0x081, {0x00, 0x81, 0x11, 0x00, 0x00, 0x00, 0x00, 0x00})});
-  (void)t0;
+  // "About 300 ms after the last RTR": life time 100 ms x 3, not earlier, within a control cycle.
+  EXPECT_GE(at, sim::milliseconds(300));
+  EXPECT_LE(at, sim::milliseconds(301));
+  h->run_ms(400);
+  EXPECT_TRUE(h->take().empty());  // the event fires once
   EXPECT_EQ(status(), 0x0001);
 }
 

@@ -23,8 +23,23 @@ void run(vtest::CanopenHarness& h, const std::vector<SdoVector>& vectors) {
 
 TEST_F(DsvTest, TV01toTV03_BootUpAndNmt) {
   EXPECT_EQ(boot, Frames{Frame(0x701, {0x00})});
-  h->nmt(0x01, 0);  // TV-02: all nodes
+  // TV-02, "Start node 1": guarding answers state 05 (toggle 0 after boot-up), the heartbeat too.
+  h->send(0x000, {0x01, 0x01});
   EXPECT_EQ(dev->node().nmt_state(), canopen::NmtState::Operational);
+  h->send(Frame::remote(0x701, 1));
+  EXPECT_EQ(h->take(), Frames{Frame(0x701, {0x05})});
+  ASSERT_EQ(write(0x1017, 0, 100, 2), 0u);
+  h->run_ms(101);
+  EXPECT_EQ(h->take(), Frames{Frame(0x701, {0x05})});
+  ASSERT_EQ(write(0x1017, 0, 0, 2), 0u);
+  h->nmt(0x80, 1);
+  h->send(Frame::remote(0x701, 1));
+  EXPECT_EQ(h->take(), Frames{Frame(0x701, {0xFF})});
+  // TV-02, "all nodes": the same, toggle going on.
+  h->send(0x000, {0x01, 0x00});
+  EXPECT_EQ(dev->node().nmt_state(), canopen::NmtState::Operational);
+  h->send(Frame::remote(0x701, 1));
+  EXPECT_EQ(h->take(), Frames{Frame(0x701, {0x05})});
   h->nmt(0x80, 1);  // TV-03
   EXPECT_EQ(dev->node().nmt_state(), canopen::NmtState::PreOperational);
   h->nmt(0x02, 1);

@@ -2,12 +2,14 @@
 // through the CiA 306 parser without a warning into the same dictionary.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include "devices/canopen/eds.h"
 #include "devices/hlt1100/hlt1100_device.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
+#include "tests/support/canopen_harness.h"
 
 namespace hlt1100::test {
 namespace {
@@ -61,8 +63,17 @@ TEST(Hlt1100Eds, RegistryEntry) {
   auto d = p->make(devices::DeviceOptions{}, error);
   ASSERT_TRUE(d) << error;
   EXPECT_EQ(d->node().node_id(), 1);
-  EXPECT_NE(d->set_input("position", 0.1), "x");
   EXPECT_EQ(d->set_input("position", 0.1), "");
+  // The value lands on the port the sensor measures: 100.0 mm = 1000 steps of 0.1 mm in 6020h:01.
+  const auto ports = d->ports();
+  const auto port = std::find_if(ports.begin(), ports.end(), [](const auto& port_info) { return port_info.name == "position"; });
+  ASSERT_NE(port, ports.end());
+  EXPECT_DOUBLE_EQ(*port->value, 0.1);
+  vtest::CanopenHarness h(d->node());
+  h.power_on();
+  h.run_ms(2);
+  EXPECT_EQ(h.read_u(0x6020, 1), 1000u);
+  EXPECT_NE(d->set_input("nope", 0.1).find("unknown input 'nope'"), std::string::npos);
   EXPECT_NE(d->inject_fault("nope", true), "");
 }
 

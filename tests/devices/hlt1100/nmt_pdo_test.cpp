@@ -144,17 +144,23 @@ TEST_F(NmtPdo, ResetCommunicationSendsBootUpAndClearsTheErrorList) {
   EXPECT_EQ(device().node().nmt_state(), canopen::NmtState::PreOperational);
 }
 
-TEST_F(NmtPdo, LifeGuardingTimeoutReturnsToPreOperationalWithoutEmcy) {
+TEST_F(NmtPdo, LifeGuardingTimeoutReturnsToPreOperationalWithoutEmcy) {  // checklist 31
   boot();
   ASSERT_EQ(h().write(0x100C, 0, 100, 2), 0u);
   ASSERT_EQ(h().write(0x100D, 0, 3, 1), 0u);
-  start();
+  ASSERT_EQ(h().write(0x6200, 0, 40, 2), 0u);  // cyclic TPDO1, so that "TPDOs stop" is visible
+  EXPECT_EQ(start(), Frames{kTpdo1});
   EXPECT_EQ(guard_rtr(), Frames{guard(0x05)});
   h().run_ms(290);
   EXPECT_EQ(device().node().nmt_state(), canopen::NmtState::Operational);
+  EXPECT_EQ(h().take(), Frames(7, kTpdo1));  // every 40 ms up to 280 ms
   h().run_ms(20);
   EXPECT_EQ(device().node().nmt_state(), canopen::NmtState::PreOperational);
-  EXPECT_TRUE(h().take().empty());  // no EMCY by default
+  EXPECT_TRUE(h().take().empty());  // the timeout at 300 ms, before the 320 ms TPDO
+  // After the timeout nothing: no EMCY by default, no cyclic TPDO1, no TPDO2 on SYNC.
+  h().send(Frame(0x080, std::vector<std::uint8_t>{}));
+  h().run_ms(500);
+  EXPECT_TRUE(h().take().empty());
   EXPECT_EQ(guard_rtr(), Frames{guard(0xFF)});
 }
 

@@ -264,24 +264,44 @@ TEST_F(Md2Test, C26_FaultResetOnlyWhenTheFaultIsGone) {
 }
 
 TEST_F(Md2Test, C27_SupplyAndAnalogSignalErrors) {
+  // Each error drives the DSM to FAULT (status word 0x0001, digest §4.5 "hardware errors in
+  // INIT"), from INIT as well as from DEVICE_MODE_ACTIVE.
   dev->inject_fault("supply_low", true);
   h->run_ms(2);
   EXPECT_EQ(h->take(), Frames{Frame(0x081, {0x12, 0x34, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00})});
-  dev->inject_fault("supply_low", false);
+  EXPECT_EQ(status(), 0x0001);
+  EXPECT_EQ(read(0x1001), 0x05u);
+  make();
   // Analog loss matters only while the analog input is in use.
   dev->inject_fault("analog_signal_lost", true);
   h->run_ms(5);
   EXPECT_TRUE(h->take().empty());
+  EXPECT_EQ(status(), 0x0008);
   make();
   ASSERT_EQ(write(0x6042, 0, 2, 1), 0u);
   dev->inject_fault("analog_signal_lost", true);
   h->run_ms(2);
   EXPECT_EQ(h->take(), Frames{Frame(0x081, {0x22, 0x34, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00})});
+  EXPECT_EQ(status(), 0x0001);
   // The supply voltage input below u_supply_min has the same effect as the injection.
   make();
+  ASSERT_EQ(write(0x6040, 0, 0x0007, 2), 0u);
+  ASSERT_EQ(status(), 0x000F);
   ASSERT_EQ(dev->set_input("supply_voltage", 17.0), "");
   h->run_ms(2);
   EXPECT_EQ(h->take(), Frames{Frame(0x081, {0x12, 0x34, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00})});
+  EXPECT_EQ(status(), 0x0001);
+  // Analog loss while ACTIVE on the analog command.
+  make();
+  ASSERT_EQ(write(0x6042, 0, 2, 1), 0u);
+  ASSERT_EQ(write(0x6040, 0, 0x0007, 2), 0u);
+  ASSERT_EQ(status(), 0x000F);
+  dev->inject_fault("analog_signal_lost", true);
+  h->run_ms(2);
+  EXPECT_EQ(h->take(), Frames{Frame(0x081, {0x22, 0x34, 0x05, 0x00, 0x00, 0x00, 0x00, 0x00})});
+  EXPECT_EQ(status(), 0x0001);
+  EXPECT_EQ(ch().solenoid_a, 0.0);
+  EXPECT_EQ(ch().solenoid_b, 0.0);
 }
 
 TEST_F(Md2Test, C28_ResetCommunicationWhileActiveFaultsAfterBootUp) {

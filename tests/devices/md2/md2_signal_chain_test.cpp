@@ -155,10 +155,13 @@ TEST_F(Md2ChainTest, PressureClosedLoopWithLocalSensor) {
   dev->set_input("actual", 100e5);
   h->run_ms(2);
   EXPECT_EQ(status(), 0x100F);  // within the window
-  // Above the set point the single-solenoid loop only lowers its output.
+  // Above the set point (150 bar = 12288 counts) the single-solenoid loop lowers its output to
+  // nothing (u is clamped at 0; there is no B side to push the pressure down).
   dev->set_input("actual", 150e5);
   h->run_ms(200);
-  EXPECT_EQ(ch().solenoid_b, 0.0);
+  EXPECT_EQ(static_cast<std::int16_t>(read(0x63D0, 1)), 8192 - 12288);
+  EXPECT_EQ(ch().solenoid_a, 0.0);
+  EXPECT_EQ(status(), 0x000F);  // outside the window
 }
 
 TEST_F(Md2ChainTest, VelocityLoopDrivesBothWaysAndSpeedLimitsTheSetPoint) {
@@ -168,10 +171,20 @@ TEST_F(Md2ChainTest, VelocityLoopDrivesBothWaysAndSpeedLimitsTheSetPoint) {
   ASSERT_EQ(dev->set_input("actual", 0.0), "");
   ASSERT_EQ(write(0x6600, 1, 100000, 4), 0u);  // 100 mm/s ... as position in this unit
   active();
-  h->run_ms(1000);
-  // After 1 s the rate-limited set point is 10000 (10 units/s): the error is w_limited − y.
-  EXPECT_GT(ch().solenoid_a, 0.0);
+  // Pure P loop (kp 1, ki 0): u = (r − y) / span with span = 2 000 000 for mm/s, and the current
+  // Imin + (Imax − Imin)·u (no dead band in a closed loop). r, the set point rate-limited to
+  // Speed+, climbs 10000 per second; unlimited it would be 100000 at once (0.24 A).
+  const auto current_for = [](double r) { return 0.2 + 0.8 * r / 2e6; };
+  const double tick = 0.8 * 10 / 2e6;  // one 1 ms control cycle of the ramp
+  h->run_ms(500);
+  EXPECT_NEAR(ch().solenoid_a, current_for(5000), tick);
+  h->run_ms(500);
+  EXPECT_NEAR(ch().solenoid_a, current_for(10000), tick);
   EXPECT_EQ(read(0x6650, 1), 100000u);  // deviation is reported against the set point
+  h->run_ms(9000);  // r reaches w after 10 s and stays there
+  EXPECT_NEAR(ch().solenoid_a, current_for(100000), tick);
+  h->run_ms(1000);
+  EXPECT_NEAR(ch().solenoid_a, current_for(100000), 1e-12);
   dev->set_input("actual", 0.2);  // 200 mm/s in mm/s... above the set point
   h->run_ms(2);
   EXPECT_EQ(ch().solenoid_a, 0.0);

@@ -74,6 +74,20 @@ TEST_F(Md2Test, M6toM16_SdoPdoExamples) {
   EXPECT_EQ(h->take(), Frames{Frame(0x181, std::vector<std::uint8_t>{})});
 }
 
+TEST_F(Md2Test, M8_SegmentedUploadOfTheVendorName) {
+  run_vectors(this, *h,
+              {
+                  {"M8 initiate", {0x40, 0x57, 0x60, 0x00}, {0x41, 0x57, 0x60, 0x00, 0x0B, 0x00, 0x00, 0x00}},
+                  {"M8 segment 1", {0x60}, {0x00, 0x57, 0x61, 0x6E, 0x64, 0x66, 0x6C, 0x75}},  // "Wandflu"
+                  {"M8 segment 2", {0x70}, {0x17, 0x68, 0x20, 0x41, 0x47, 0x00, 0x00, 0x00}},  // "h AG", last
+              });
+  // The transfer is over: another segment request is no longer part of it.
+  h->send(Frame(0x601, {0x60, 0, 0, 0, 0, 0, 0, 0}));
+  const auto after = h->take();
+  ASSERT_EQ(after.size(), 1u);
+  EXPECT_EQ(after[0].data[0], 0x80);  // abort
+}
+
 // ---- 6.2: commissioning sequence ----------------------------------------------------------------
 
 TEST_F(Md2Test, CommissioningSequenceAtByteLevel) {
@@ -314,6 +328,30 @@ TEST_F(Md2Test, B12_UnsavedNodeIdAppliesAtResetCommunicationOnly) {
   h->nmt(0x81, 1);
   h->run_ticks(1);
   EXPECT_EQ(h->take(), Frames{Frame(0x701, {0x00})});
+}
+
+TEST_F(Md2Test, B13_LifeGuardingTimeoutInDisabled) {
+  ASSERT_EQ(write(0x100C, 0, 100, 2), 0u);
+  ASSERT_EQ(write(0x100D, 0, 3, 1), 0u);
+  ASSERT_EQ(write(0x6040, 0, 0x0001, 2), 0u);
+  ASSERT_EQ(status(), 0x0009);  // DISABLED, NMT Pre-operational
+  h->send(Frame::remote(0x701, 1));
+  EXPECT_EQ(h->take(), Frames{Frame(0x701, {0x7F})});
+  const auto t0 = h->now();
+  h->run_ms(299);
+  EXPECT_TRUE(h->take().empty());  // not before the life time, 100 ms x 3
+  // One tick (1 ms) at a time: the EMCY and the tick that sent it.
+  Frames frames;
+  sim::Duration at{};
+  while (frames.empty() && h->now() - t0 < sim::milliseconds(400)) {
+    at = h->now() - t0;
+    h->run_ms(1);
+    frames = h->take();
+  }
+  EXPECT_EQ(frames, Frames{Frame(0x081, {0x00, 0x81, 0x11, 0x00, 0x00, 0x00, 0x00, 0x00})});
+  EXPECT_GE(at, sim::milliseconds(300));
+  EXPECT_LE(at, sim::milliseconds(301));  // ≈ 300 ms, within a control cycle
+  EXPECT_EQ(status(), 0x0001);
 }
 
 TEST_F(Md2Test, B14_HeartbeatCount) {

@@ -41,8 +41,8 @@ TEST(VtvpcdControl, TriggerWinsOverInputsAndSelectsTheControllerGroup) {  // che
   vtest::Vtvpcd n({{"builtin_plant", "false"}});
   ASSERT_EQ(n.write2(0x2323, 256), 0u);  // group 0 (sets 0-3): Kp 2.0
   ASSERT_EQ(n.write2(0x2327, 384), 0u);  // group 1 (sets 4-7): Kp 3.0
-  ASSERT_EQ(n.write2(0x2423, 30000), 0u);
-  ASSERT_EQ(n.write2(0x2427, 30000), 0u);
+  ASSERT_EQ(n.write2(0x2423, 2000), 0u);   // group 0: Ti 2 s
+  ASSERT_EQ(n.write2(0x2427, 10000), 0u);  // group 1: Ti 10 s
   for (int k = 0; k < 16; ++k) ASSERT_EQ(n.write4(static_cast<std::uint16_t>(0x2001 + k), 32767), 0u);
   ASSERT_EQ(n.write4(0x2004, 4444), 0u);
   n.set("pressure_b", 315e5);  // 10 % of p_ref below the 350 bar command
@@ -53,6 +53,18 @@ TEST(VtvpcdControl, TriggerWinsOverInputsAndSelectsTheControllerGroup) {  // che
   n->run_ms(1);
   EXPECT_EQ(n.raw(0x2F2F), 4444);
   EXPECT_NEAR(to_eu(n.raw(0x2F32), kScaleTable), 20.0, 0.05);
+  // The integral time is the group's too: I grows by Kp·e·t/Ti, e = 10 % constant (no plant).
+  // Group 0 over 100 ms: 2.0 · 10 · 0.1 / 2 = 1.0 % (group 1's Ti would give 0.2 %).
+  const double g0 = to_eu(n.raw(0x2F32), kScaleTable);
+  n->run_ms(100);
+  EXPECT_NEAR(to_eu(n.raw(0x2F32), kScaleTable) - g0, 1.0, 0.02);
+  // Back to set 5 (group 1, I kept): 3.0 · 10 · 0.1 / 10 = 0.3 % per 100 ms (group 0's: 1.5 %).
+  ASSERT_EQ(n.write4(0x2C67, 0x00000020), 0u);
+  n->run_ms(1);
+  const double g1 = to_eu(n.raw(0x2F32), kScaleTable);
+  EXPECT_NEAR(g1, 30.0 + 1.0, 0.05);  // bumpless: Kp·e of group 1 plus the kept I
+  n->run_ms(100);
+  EXPECT_NEAR(to_eu(n.raw(0x2F32), kScaleTable) - g1, 0.3, 0.02);
   ASSERT_EQ(n.write4(0x2C67, 0x00000101), 0u);  // two sets: the lowest (0), no fault by default
   n->run_ms(1);
   EXPECT_EQ(n.raw(0x2F2F), 32767);

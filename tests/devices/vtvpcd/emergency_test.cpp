@@ -141,6 +141,27 @@ TEST(VtvpcdEmcy, TwoFaultsWithOneCodeSignalOnceAndClearTogether) {
   EXPECT_EQ(n->take(), Frames{Frame(0x0BF, {0, 0, 0, 0, 0, 0, 0, 0})});
 }
 
+TEST(VtvpcdEmcy, TwoBitTriggerIsFault18WithEmcy1000) {  // checklist 31, trigger_multibit = fault
+  vtest::Vtvpcd n({{"trigger_multibit", "fault"}});
+  ASSERT_EQ(n.write4(0x2C67, 0x0008), 0u);  // one set: fine
+  n->run_ms(5);
+  EXPECT_TRUE(n->take().empty());
+  ASSERT_EQ(n.write4(0x2C67, 0x0101), 0u);  // two sets: fault 18, a stop fault, generic error
+  n->run_ms(1);
+  EXPECT_EQ(n->take(), Frames{Frame(0x0BF, {0x00, 0x10, 0x01, 0, 0, 0, 0, 0})});
+  EXPECT_EQ(n.sdo({0x40, 0x68, 0x2C, 0x00}), (Bytes{0x4B, 0x68, 0x2C, 0x00, 0x12, 0x01, 0, 0}));
+  EXPECT_EQ(n.sdo({0x40, 0x01, 0x10, 0x00}), (Bytes{0x4F, 0x01, 0x10, 0x00, 0x01, 0, 0, 0}));
+  EXPECT_EQ(n->read_u(0x1003, 1), 0x1000u);
+  EXPECT_FALSE(n.dev().control().energised);  // stop
+  n->run_ms(100);
+  EXPECT_TRUE(n->take().empty());  // once
+  // A valid Trigger again, then the acknowledgement: the "no error" EMCY.
+  ASSERT_EQ(n.write4(0x2C67, 0x0008), 0u);
+  acknowledge(n);
+  EXPECT_EQ(n->take(), Frames{Frame(0x0BF, {0, 0, 0, 0, 0, 0, 0, 0})});
+  EXPECT_EQ(n.raw(0x2C68), 0);
+}
+
 TEST(VtvpcdEmcy, DifferentErrorRegisterBitsUnderOneCode) {
   vtest::Vtvpcd n({{"trigger_multibit", "fault"}});
   n.dev().inject_fault("do3_short", true);

@@ -10,6 +10,27 @@ using vtest::Frame;
 using vtest::Frames;
 using Bytes = std::vector<std::uint8_t>;
 
+namespace {
+/// Runs `ms` one-millisecond ticks one at a time; every frame the master got, stamped with the
+/// time of the tick that sent it (as the harness's own take_times() would, without losing the frames).
+struct Timed {
+  Frames frames;
+  std::vector<sim::Time> times;
+};
+Timed run_collecting(vtest::Vtvpcd& n, int ms) {
+  Timed out;
+  for (int i = 0; i < ms; ++i) {
+    const auto tick = n->now();
+    n->run_ms(1);
+    for (auto& f : n->take()) {
+      out.frames.push_back(std::move(f));
+      out.times.push_back(tick);
+    }
+  }
+  return out;
+}
+}  // namespace
+
 TEST(VtvpcdPdo, NoTransmissionBeforeNmtStart) {  // checklist 18
   vtest::Vtvpcd n;
   ASSERT_EQ(n->write(0x1800, 5, 100, 2), 0u);
@@ -23,10 +44,8 @@ TEST(VtvpcdPdo, ExampleTpdo1EveryEventTimerPeriodAfterStart) {  // checklist 19,
   n.set("swivel_angle", 0.5);
   ASSERT_EQ(n->write(0x1800, 5, 100, 2), 0u);
   n->send(0x000, {0x01, 0x3F});
-  const auto started = n->now();
   n->run_ms(350);
   const auto frames = n->take();
-  n->run_ms(0);
   ASSERT_EQ(frames.size(), 3u);
   for (const auto& f : frames) EXPECT_EQ(f, Frame(0x1BF, {0xFF, 0xBF, 0x00, 0x00, 0x03, 0x00, 0x00, 0x00}));
   vtest::Vtvpcd m({{"builtin_plant", "false"}});
@@ -39,38 +58,86 @@ TEST(VtvpcdPdo, ExampleTpdo1EveryEventTimerPeriodAfterStart) {  // checklist 19,
   EXPECT_EQ((times[0] - t0).count(), 100000);
   EXPECT_EQ((times[1] - times[0]).count(), 100000);
   EXPECT_EQ((times[2] - times[1]).count(), 100000);
-  (void)started;
 }
 
-TEST(VtvpcdPdo, SecondTpdoAndStoppingByTimerZero) {  // checklist 20, TV30
+TEST(VtvpcdPdo, ManualSequenceOnNode5) {  // checklist 8, TV6-TV9
+  vtest::Vtvpcd n({{"builtin_plant", "false"}}, 5);
+  n.set("pressure_b", 150e5);
+  n.set("swivel_angle", 0.5);
+  n->send(0x605, {0x2B, 0x00, 0x18, 0x05, 0x64, 0x00, 0x00, 0x00});  // TV6
+  EXPECT_EQ(n->take(), Frames{Frame(0x585, {0x60, 0x00, 0x18, 0x05, 0x00, 0x00, 0x00, 0x00})});
+  n->send(0x605, {0x42, 0x00, 0x18, 0x05, 0x00, 0x00, 0x00, 0x00});  // TV7
+  EXPECT_EQ(n->take(), Frames{Frame(0x585, {0x4B, 0x00, 0x18, 0x05, 0x64, 0x00, 0x00, 0x00})});
+  n->send(0x000, {0x01, 0x05});  // TV8
+  EXPECT_EQ(n.device->node().nmt_state(), canopen::NmtState::Operational);
+  const auto t0 = n->now();
+  const auto got = run_collecting(n, 350);
+  // TV9: 0x185 every 100 ms with act. pressure B 150 bar and Discrete Outputs OK + DO1.
+  const Frame tv9(0x185, {0xFF, 0xBF, 0x00, 0x00, 0x03, 0x00, 0x00, 0x00});
+  EXPECT_EQ(got.frames, (Frames{tv9, tv9, tv9}));
+  ASSERT_EQ(got.times.size(), 3u);
+  for (std::size_t i = 0; i < got.times.size(); ++i) EXPECT_EQ(got.times[i] - t0, sim::milliseconds(100 * (i + 1))) << i;
+}
+
+TEST(VtvpcdPdo, SecondTpdoAndStoppingByTimerZero) {  // checklist 20
   vtest::Vtvpcd n({{"builtin_plant", "false"}});
   n.set("pilot_spool_position", -0.25);
   ASSERT_EQ(n->write(0x1800, 5, 100, 2), 0u);
   n.start();
   n->run_ms(5);
   n->take();
-  ASSERT_EQ(n->write(0x1801, 5, 20, 2), 0u);  // in Operational
+  ASSERT_EQ(n->write(0x1801, 5, 20, 2), 0u);  // in Operational: the timer starts with the write
   const auto t0 = n->now();
-  n->run_ms(101);
-  Frames tpdo2;
+  const auto got = run_collecting(n, 101);
+  Frames tpdo1, tpdo2;
   std::vector<sim::Time> t2;
-  auto frames = n->take();
-  for (const auto& f : frames)
-    if (f.id == 0x2BF) tpdo2.push_back(f);
+  for (std::size_t i = 0; i < got.frames.size(); ++i) {
+    if (got.frames[i].id == 0x2BF) {
+      tpdo2.push_back(got.frames[i]);
+      t2.push_back(got.times[i]);
+    } else {
+      tpdo1.push_back(got.frames[i]);
+    }
+  }
+  // act. valve -25 % = -8192.5 -> -8193 (0xFFFFDFFF), DLC 4, every 20 ms from the write.
   ASSERT_EQ(tpdo2.size(), 5u);
-  // act. valve -25 % = -8192.5 -> -8193 (0xFFFFDFFF), DLC 4.
-  EXPECT_EQ(tpdo2[0], Frame(0x2BF, {0xFF, 0xDF, 0xFF, 0xFF}));
-  (void)t0;
+  for (std::size_t i = 0; i < tpdo2.size(); ++i) {
+    EXPECT_EQ(tpdo2[i], Frame(0x2BF, {0xFF, 0xDF, 0xFF, 0xFF})) << i;
+    EXPECT_EQ(t2[i] - t0, sim::milliseconds(20 * (i + 1))) << i;
+  }
+  for (const auto& f : tpdo1) EXPECT_EQ(f.id, 0x1BFu);
+  EXPECT_EQ(tpdo1.size(), 1u);  // TPDO1 went on with its own 100 ms
+  // 0x1800:05 = 0 stops 0x1BF at once; 0x2BF goes on.
   ASSERT_EQ(n->write(0x1800, 5, 0, 2), 0u);
   n->run_ms(300);
-  for (const auto& f : n->take()) EXPECT_EQ(f.id, 0x2BFu);
+  const auto after = n->take();
+  EXPECT_EQ(after.size(), 15u);
+  for (const auto& f : after) EXPECT_EQ(f.id, 0x2BFu);
+}
+
+TEST(VtvpcdPdo, Tv30SecondTpdoEvery20MsOnNode5) {  // TV30: timer set, then Operational
+  vtest::Vtvpcd n({{"builtin_plant", "false"}}, 5);
+  n.set("pilot_spool_position", -0.25);
+  ASSERT_EQ(n->write(0x1801, 5, 20, 2), 0u);
+  n->run_ms(100);
+  EXPECT_TRUE(n->take().empty());  // nothing before the start
+  n->send(0x000, {0x01, 0x05});
+  const auto t0 = n->now();
+  const auto got = run_collecting(n, 101);
+  ASSERT_EQ(got.frames.size(), 5u);
+  for (std::size_t i = 0; i < got.frames.size(); ++i) {
+    EXPECT_EQ(got.frames[i], Frame(0x285, {0xFF, 0xDF, 0xFF, 0xFF})) << i;  // act. valve, DLC 4
+    EXPECT_EQ(got.times[i] - t0, sim::milliseconds(20 * (i + 1))) << i;
+  }
 }
 
 TEST(VtvpcdPdo, RpdoIgnoredInPreOperational) {  // checklist 21
   vtest::Vtvpcd n;
   n->send(0x23F, {0x08, 0x00, 0x00, 0x00, 0x98, 0x99, 0x00, 0x00});
-  EXPECT_EQ(n.raw(0x2C67), 0);
-  EXPECT_EQ(n.raw(0x2C74), 114685);
+  EXPECT_TRUE(n->take().empty());
+  // Checked by SDO: Trigger 0, Pressure CMD (BUS) still its start-up value 114685 (0x0001BFFD).
+  EXPECT_EQ(n.sdo({0x40, 0x67, 0x2C, 0x00}), (Bytes{0x43, 0x67, 0x2C, 0x00, 0x00, 0x00, 0x00, 0x00}));
+  EXPECT_EQ(n.sdo({0x40, 0x74, 0x2C, 0x00}), (Bytes{0x43, 0x74, 0x2C, 0x00, 0xFD, 0xBF, 0x01, 0x00}));
 }
 
 TEST(VtvpcdPdo, ExampleRpdosInOperational) {  // checklist 22, TV38, TV39
@@ -101,6 +168,28 @@ TEST(VtvpcdPdo, ShortRpdoIgnoredWithoutEmcyLongerOneAccepted) {  // checklist 23
   n->send(0x53F, {});
   n->run_ms(10);
   EXPECT_TRUE(n->take().empty());
+}
+
+TEST(VtvpcdPdo, RpdoLongerThanItsMappingSurplusIgnored) {  // digest §2.9
+  vtest::Vtvpcd n;
+  // RPDO1 cut to the Trigger alone (DS-301 procedure, Pre-operational): 4 mapped bytes.
+  ASSERT_EQ(n->write(0x1600, 0, 0, 1), 0u);
+  ASSERT_EQ(n->write(0x1600, 0, 1, 1), 0u);
+  n.start();
+  n->take();
+  // The TV38 frame, 8 bytes: the Trigger is taken, bytes 4-7 (formerly Pressure CMD) are not.
+  n->send(0x23F, {0x08, 0x00, 0x00, 0x00, 0x98, 0x99, 0x00, 0x00});
+  n->run_ms(10);
+  EXPECT_TRUE(n->take().empty());  // no EMCY, no reply
+  EXPECT_EQ(n.sdo({0x40, 0x67, 0x2C, 0x00}), (Bytes{0x43, 0x67, 0x2C, 0x00, 0x08, 0x00, 0x00, 0x00}));
+  EXPECT_EQ(n.sdo({0x40, 0x74, 0x2C, 0x00}), (Bytes{0x43, 0x74, 0x2C, 0x00, 0xFD, 0xBF, 0x01, 0x00}));
+  EXPECT_EQ(n.raw(0x2F2F), n.raw(0x2004));  // set 3 is in use
+  // Surplus on a 2-byte configured slot, too.
+  vtest::Vtvpcd m({{"rpdo_area", "0x2C72:2"}});
+  m.start();
+  m->send(0x23F, {0x00, 0xC0, 0x1F, 0xFF, 0x11, 0x22, 0x33, 0x44});
+  EXPECT_EQ(m.sdo({0x40, 0x72, 0x2C, 0x00}), (Bytes{0x43, 0x72, 0x2C, 0x00, 0x00, 0xC0, 0xFF, 0xFF}));
+  EXPECT_EQ(m.sdo({0x40, 0x2A, 0x2F, 0x00}), (Bytes{0x4B, 0x2A, 0x2F, 0x00, 0x00, 0x00, 0x00, 0x00}));
 }
 
 TEST(VtvpcdPdo, SyncAndRemoteRequestsTriggerNothing) {  // checklist 24, A19

@@ -156,16 +156,28 @@ class HeartbeatConsumer : public WdgaTest {
   }
 };
 
-TEST_F(HeartbeatConsumer, TimeoutSends8130AndGoesPreOperational) {
+TEST_F(HeartbeatConsumer, TimeoutSends8130AndGoesPreOperational) {  // checklist 36
   watch();
+  ASSERT_EQ(h().write(0x1017, 0, 250, 2), 0u);  // its own heartbeat shows the fallback
   start();
   h().send(Frame(0x77E, {0x05}));
   h().run_ms(900);
   h().send(Frame(0x77E, {0x05}));
   h().take();
   h().run_ms(1002);
-  EXPECT_EQ(h().take(), Frames{emcy({0x30, 0x81, 0x10})});
+  // The EMCY once; heartbeats before it say Operational (05), any after it Pre-operational (7F).
+  Frames emcys;
+  for (const auto& f : h().take()) {
+    if (f.id == 0x77F) {
+      EXPECT_EQ(f, Frame(0x77F, {emcys.empty() ? std::uint8_t{0x05} : std::uint8_t{0x7F}}));
+    } else {
+      emcys.push_back(f);
+    }
+  }
+  EXPECT_EQ(emcys, Frames{emcy({0x30, 0x81, 0x10})});
   EXPECT_EQ(device().node().nmt_state(), canopen::NmtState::PreOperational);
+  h().run_ms(250);
+  EXPECT_EQ(h().take(), Frames{Frame(0x77F, {0x7F})});  // one period: exactly one heartbeat
   h().send(Frame(0x77E, {0x05}));  // back: error reset
   h().run_ticks(1);
   EXPECT_EQ(h().take(), Frames{emcy({0x00, 0x00, 0x00})});

@@ -27,6 +27,16 @@ TEST_F(NodeId, SdoNodeIdIsPendingUntilAResetAndSavedAtOnce) {
   EXPECT_EQ(h().take(), Frames{Frame(0x705, {0x00})});
   EXPECT_EQ(u(0x1800, 1), 0x40000185u);
   EXPECT_EQ(u(0x1014), 0x85u);
+  // The frames themselves move to the new node-ID.
+  start();
+  h().take();
+  turn_to(0.25);
+  h().run_ms(3);
+  const auto frames = h().take();
+  ASSERT_FALSE(frames.empty());
+  for (const auto& f : frames) EXPECT_EQ(f.id, 0x185u);
+  device().inject_fault("can_overrun", true);
+  EXPECT_EQ(h().take(), Frames{Frame(0x085, eight({0x10, 0x81, 0x10, 0x01}))});
   power_cycle();
   EXPECT_EQ(id(), 5);
 }
@@ -56,12 +66,26 @@ TEST_F(NodeId, StoredCobIdsNoLongerFollowTheNodeId) {
   h().run_ms(3);
   const auto frames = h().take();
   ASSERT_FALSE(frames.empty());
-  EXPECT_EQ(frames.back().id, 0x185u);
+  for (const auto& f : frames) EXPECT_EQ(f.id, 0x185u);
+  // The EMCY, too, still goes out on the stored 085h (an overrun: an event, no state change).
+  device().inject_fault("can_overrun", true);
+  EXPECT_EQ(h().take(), Frames{Frame(0x085, eight({0x10, 0x81, 0x10, 0x01}))});
   h().nmt(0x80, 6);
   ASSERT_EQ(h().write(0x1011, 1, kLoad, 4), 0u);
   reset_node();
   EXPECT_EQ(h().take(), Frames{Frame(0x706, {0x00})});
   EXPECT_EQ(u(0x1800, 1), 0x40000186u);  // tracking again
+  EXPECT_EQ(u(0x1014), 0x86u);
+  // ... and on the bus: TPDO1 on 186h, EMCY on 086h.
+  start();
+  h().take();
+  turn_to(0.5);
+  h().run_ms(3);
+  const auto after = h().take();
+  ASSERT_FALSE(after.empty());
+  for (const auto& f : after) EXPECT_EQ(f.id, 0x186u);
+  device().inject_fault("can_overrun", true);
+  EXPECT_EQ(h().take(), Frames{Frame(0x086, eight({0x10, 0x81, 0x10, 0x01}))});
 }
 
 TEST_F(NodeId, StoreSignatureAndRestoreKeepsNodeIdBitRateAndCustomerData) {
