@@ -157,8 +157,13 @@ void Node::set_nmt_state(NmtState state) {
 void Node::communication_error(CommError error) {
   if (app().on_communication_error(error)) return;
   const auto& p = policy_.error_control;
-  const std::uint16_t code = error == CommError::HeartbeatConsumer ? p.heartbeat_consumer_emcy : p.life_guard_emcy;
-  if (code != 0) emcy_->raise(code, p.communication_error_register);
+  if (error == CommError::BusOffRecovered) {
+    // An event, not a lasting condition: nothing clears it later.
+    if (p.bus_off_recovered_emcy != 0) emcy_->signal(p.bus_off_recovered_emcy, p.communication_error_register);
+  } else {
+    const std::uint16_t code = error == CommError::HeartbeatConsumer ? p.heartbeat_consumer_emcy : p.life_guard_emcy;
+    if (code != 0) emcy_->raise(code, p.communication_error_register);
+  }
   if (const auto* behaviour = od_.entry(kErrorBehaviour, 1)) {
     switch (behaviour->as<std::uint8_t>()) {
       case 0:

@@ -196,7 +196,11 @@ void Application::on_nmt_state_changed(NmtState from, NmtState to) {
   }
 }
 
-bool Application::on_communication_error(canopen::CommError) {
+bool Application::on_communication_error(canopen::CommError error) {
+  if (error == canopen::CommError::BusOffRecovered) {  // digest: a CAN-controller error, 8100h
+    can_controller_error();
+    return true;
+  }
   // Life-guarding timeout: the manual only says "changes to PRE-OPERATIONAL" [M §4.6.1.2].
   if (settings_.life_guard_emcy != 0) diagnostics_.signal(settings_.life_guard_emcy, 0x11);
   if (node_.nmt_state() == NmtState::Operational) node_.set_nmt_state(NmtState::PreOperational);

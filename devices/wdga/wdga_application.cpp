@@ -343,17 +343,24 @@ void Application::on_nmt_state_changed(NmtState from, NmtState to) {
 }
 
 bool Application::on_communication_error(canopen::CommError error) {
-  const std::uint16_t code = node_.policy().error_control.heartbeat_consumer_emcy;
-  if (error != canopen::CommError::BusOffRecovered) diagnostics_.record_error(code);
+  if (error == canopen::CommError::BusOffRecovered) {  // a bus-off the scenario made on the wire
+    bus_off_recovered();
+    return true;
+  }
+  diagnostics_.record_error(node_.policy().error_control.heartbeat_consumer_emcy);
   return false;  // the stack sends 8130h and applies 1029h:01
+}
+
+void Application::bus_off_recovered() {
+  diagnostics_.signal(kEmcyBusOffRecovered, kErCommunication, {0x01, 0, 0, 0, 0});
+  diagnostics_.apply_communication_error_behaviour();
 }
 
 void Application::process(sim::Time now, sim::Duration) {
   if (bus_off_ && bus_off_recovers_ && now >= bus_off_until_) {
     bus_off_ = false;
     node_.set_bus_off(false);
-    diagnostics_.signal(kEmcyBusOffRecovered, kErCommunication, {0x01, 0, 0, 0, 0});
-    diagnostics_.apply_communication_error_behaviour();
+    bus_off_recovered();
   }
   // The 1 ms internal cycle, whatever the scheduler's tick (several cycles per long tick).
   int guard = 0;

@@ -30,6 +30,8 @@ class Application final : public canopen::Application {
   void set_error_passive(bool active);
   void receive_overrun();
   void go_bus_off();
+  /// Back from bus-off (its own or one made on the wire): EMCY 8140h, then 1029h:01.
+  void bus_off_recovered();
 
   // canopen::Application
   void on_reset_application() override;

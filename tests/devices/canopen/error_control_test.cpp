@@ -85,6 +85,20 @@ TEST(LifeGuarding, ErrorBehaviourGoesPreOperationalFromOperational) {
   EXPECT_EQ(h.node().nmt_state(), canopen::NmtState::PreOperational);  // 0x1029:01 = 0
 }
 
+TEST(BusOff, RecoverySendsEmcy8140OnceAndAppliesTheErrorBehaviour) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  h.power_on();
+  h.nmt(0x01, 5);
+  h.run_ticks(1);
+  h.take();
+  h.node().communication_error(canopen::CommError::BusOffRecovered);
+  h.run_ms(5);
+  // An event: EMCY 8140h with the communication bit, no "no error" EMCY after it.
+  EXPECT_EQ(h.take(), Frames{Frame(0x085, {0x40, 0x81, 0x11, 0, 0, 0, 0, 0})});
+  EXPECT_EQ(h.read_u(0x1003, 1), 0x8140u);
+  EXPECT_EQ(h.node().nmt_state(), canopen::NmtState::PreOperational);  // 0x1029:01 = 0
+}
+
 TEST(LifeGuarding, HeartbeatDisarmsLifeGuardingWhenGuardingIsExclusive) {
   canopen::NodePolicy policy;
   policy.error_control.guard_while_heartbeat = false;

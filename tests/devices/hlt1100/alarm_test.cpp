@@ -85,6 +85,15 @@ TEST_F(Alarms, CanControllerErrorLatchesTheCommunicationBit) {
   EXPECT_EQ(h().read_u(0x1001, 0), 0u);
 }
 
+TEST_F(Alarms, BusOffRecoveryIsACanControllerError) {
+  // Digest §3: 8100h covers bus-off recovery (e.g. a bus-off a scenario made on the wire).
+  h().take();
+  device().node().communication_error(canopen::CommError::BusOffRecovered);
+  h().run_ticks(1);
+  EXPECT_EQ(h().take(), Frames{emcy({0x00, 0x81, 0x11})});
+  EXPECT_EQ(device().node().nmt_state(), canopen::NmtState::PreOperational);
+}
+
 TEST_F(Alarms, OutOfRangeAndSecondMagnetAreAlsoPositionErrors) {
   magnet_mm(500.0);  // the range is 0 <= x < 500 mm
   h().run_ms(1);

@@ -133,6 +133,16 @@ TEST_F(Faults, BusOffAutoResetSends8140AndAppliesTheCommunicationErrorBehaviour)
   EXPECT_EQ(device().node().nmt_state(), canopen::NmtState::PreOperational);
 }
 
+TEST_F(Faults, BusOffMadeOnTheWireAlsoSends8140) {
+  // A scenario's wire fault: the controller never knew, the stack reports the recovery.
+  start();
+  h().take();
+  device().node().communication_error(canopen::CommError::BusOffRecovered);
+  h().run_ms(2);
+  EXPECT_EQ(h().take(), Frames{emcy({0x40, 0x81, 0x10, 0x01})});
+  EXPECT_EQ(device().node().nmt_state(), canopen::NmtState::PreOperational);
+}
+
 TEST_F(Faults, PositionErrorHasNoEmcyButRegisterStatusAndHistory) {
   start();
   h().take();
