@@ -168,9 +168,14 @@ void PdoService::load(Pdo& p, PdoDirection dir) {
 }
 
 void PdoService::load(Tpdo& t) {
+  const bool was_valid = t.valid;
   load(t, PdoDirection::Transmit);
   const auto* start = node_.od().entry(t.comm_index, 6);
   t.sync_start = start ? start->as<std::uint8_t>() : 0;
+  if (t.valid && !was_valid) {  // a PDO made valid again starts its SYNC counting afresh
+    t.sync_count = 0;
+    t.awaiting_start = true;
+  }
 }
 
 void PdoService::reload() {

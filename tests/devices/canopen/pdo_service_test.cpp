@@ -165,6 +165,24 @@ TEST_F(SyncCounterTest, FirstTransmissionWaitsForTheStartValueThenEveryNth) {
   EXPECT_EQ(sent, (std::vector<bool>{false, false, true, false, true, false, true, false}));
 }
 
+TEST_F(SyncCounterTest, APdoMadeValidAgainWaitsForItsStartValueAgain) {
+  ASSERT_EQ(h.write(0x1019, 0, 4, 1), 0u);
+  h.nmt(0x01, 5);
+  h.run_ticks(1);
+  h.take();
+  sync(1);
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0, 0, 0, 0})});  // type 1, no start value yet
+  // Reconfigured in Operational: invalid, start value 4, valid again.
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);
+  ASSERT_EQ(h.write(0x1801, 6, 4, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x00000285, 4), 0u);
+  sync(2);
+  sync(3);
+  EXPECT_TRUE(h.take().empty());
+  sync(4);
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0, 0, 0, 0})});
+}
+
 TEST_F(SyncCounterTest, WithoutAStartValueTheFirstSyncCounts) {
   ASSERT_EQ(h.write(0x1019, 0, 4, 1), 0u);
   ASSERT_EQ(h.write(0x1801, 2, 2, 1), 0u);
