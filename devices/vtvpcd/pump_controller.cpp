@@ -20,7 +20,14 @@ void PumpController::reset() {
 }
 
 double PumpController::controlled_pressure(double alpha_r, double p_a, double p_b) const {
-  // A4VSO/A2V: pump pressure at port B. A4VSG: the side the flow goes to (A31).
+  // A31: configurable; by default the side the flow goes to (A4VSO/A2V: port B; A4VSG: B for a
+  // positive angle command, A for a negative one).
+  switch (s_.controlled_pressure) {
+    case ControlledPressure::A: return p_a;
+    case ControlledPressure::B: return p_b;
+    case ControlledPressure::Max: return std::max(p_a, p_b);
+    case ControlledPressure::FlowSide: break;
+  }
   if (s_.pump_type == PumpType::A4VSG && alpha_r < 0.0) return p_a;
   return p_b;
 }

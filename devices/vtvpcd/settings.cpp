@@ -168,6 +168,11 @@ const std::vector<Knob>& knobs() {
       // application
       {"pump_type", "A4VSO",
        choice(&Settings::pump_type, {{"A4VSO", PumpType::A4VSO}, {"A4VSG", PumpType::A4VSG}, {"A2V", PumpType::A2V}})},
+      {"controlled_pressure", "flow_side",
+       choice(&Settings::controlled_pressure, {{"flow_side", ControlledPressure::FlowSide},
+                                               {"A", ControlledPressure::A},
+                                               {"B", ControlledPressure::B},
+                                               {"max", ControlledPressure::Max}})},
       {"cmd_source", "bus", choice(&Settings::cmd_source, {{"bus", CommandSource::Bus}, {"analog", CommandSource::Analog}})},
       {"direct_mode_ramps", "none", choice(&Settings::direct_mode_ramps_set0, {{"none", false}, {"set0", true}})},
       {"trigger_multibit", "lowest",

@@ -21,6 +21,14 @@ enum class TimeoutReaction : std::uint8_t { Stop, Report };
 enum class PressureBusUnit : std::uint8_t { Bar, PercentOfReference };
 enum class PilotSupply : std::uint8_t { External, Internal };
 
+/// Which pressure the pressure controller and the power limit use (digest §4.8, A31).
+enum class ControlledPressure : std::uint8_t {
+  FlowSide,  ///< A4VSO/A2V: p_B; A4VSG: p_B for Angle CMD >= 0, p_A for Angle CMD < 0
+  A,         ///< always act. pressure A
+  B,         ///< always act. pressure B
+  Max,       ///< max(p_A, p_B)
+};
+
 /// What DO1, DO2..DO7 signal (OK is fixed). Digest §3.5 / A27.
 enum class OutputFunction : std::uint8_t {
   ControllerActive,  ///< Enable = 1 and no stop fault
@@ -68,6 +76,7 @@ struct Settings {
 
   // --- application -----------------------------------------------------------------------------
   PumpType pump_type = PumpType::A4VSO;
+  ControlledPressure controlled_pressure = ControlledPressure::FlowSide;  ///< A31
   CommandSource cmd_source = CommandSource::Bus;
   bool direct_mode_ramps_set0 = false;  ///< direct_mode_ramps = none | set0 (A29)
   MultiBitTrigger trigger_multibit = MultiBitTrigger::Lowest;  ///< A11

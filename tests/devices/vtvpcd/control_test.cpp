@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "devices/vtvpcd/parameter_conversion.h"
 #include "tests/devices/vtvpcd/vtvpcd_fixture.h"
@@ -313,6 +316,81 @@ TEST(VtvpcdControl, OverCentrePumpControlsPressureAOnTheNegativeSide) {  // pump
   n.set("enable", 0);
   n->run_ms(1000);
   EXPECT_NEAR(angle(n), -100.0, 0.1);
+}
+
+// controlled_pressure (A31): which transducer the pressure controller (and the power limit) uses.
+// External plant, LVDT at 0: angle 100 %, pressure 150 bar, one transducer at 100 bar and the other
+// at 200 bar. The pressure branch limits (pressure stroke 0x2F32 -> 0) only if the controlled
+// pressure is the 200 bar one; otherwise it winds up to 100 % and the angle command wins.
+namespace {
+Branch limiting_branch(const std::string& controlled, const std::string& pump, double p_a_bar, double p_b_bar) {
+  vtest::Vtvpcd n({{"builtin_plant", "false"}, {"pump_type", pump}, {"controlled_pressure", controlled}});
+  n.set("pressure_a", p_a_bar * 1e5);
+  n.set("pressure_b", p_b_bar * 1e5);
+  EXPECT_EQ(n.write4(0x2C72, 32767), 0u);
+  EXPECT_EQ(n.write4(0x2C74, to_raw(150.0, kScalePercent)), 0u);
+  n->run_ms(3000);
+  const double stroke = to_eu(n.raw(0x2F32), kScaleTable);
+  const Branch b = n.dev().control().branch;
+  if (b == Branch::Pressure) {
+    EXPECT_LT(stroke, 0.5) << controlled;  // down to the swivel range's low end (A4VSG: -100 %)
+    EXPECT_LT(to_eu(n.raw(0x2F20), kScaleTable), 0.5) << controlled;  // res. Angle CMD
+  } else {
+    EXPECT_NEAR(stroke, 100.0, 0.5) << controlled;
+    EXPECT_NEAR(to_eu(n.raw(0x2F20), kScaleTable), 100.0, 0.5) << controlled;
+  }
+  return b;
+}
+}  // namespace
+
+TEST(VtvpcdControl, ControlledPressureIsConfigurable) {  // controlled_pressure (A31)
+  // Pressure B above A.
+  EXPECT_EQ(limiting_branch("flow_side", "A4VSO", 100.0, 200.0), Branch::Pressure);  // default: B
+  EXPECT_EQ(limiting_branch("B", "A4VSO", 100.0, 200.0), Branch::Pressure);
+  EXPECT_EQ(limiting_branch("A", "A4VSO", 100.0, 200.0), Branch::Angle);
+  EXPECT_EQ(limiting_branch("max", "A4VSO", 100.0, 200.0), Branch::Pressure);
+  // Pressure A above B.
+  EXPECT_EQ(limiting_branch("flow_side", "A4VSO", 200.0, 100.0), Branch::Angle);
+  EXPECT_EQ(limiting_branch("B", "A4VSO", 200.0, 100.0), Branch::Angle);
+  EXPECT_EQ(limiting_branch("A", "A4VSO", 200.0, 100.0), Branch::Pressure);
+  EXPECT_EQ(limiting_branch("max", "A4VSO", 200.0, 100.0), Branch::Pressure);
+  // The default is the flow side: an A4VSG with a positive angle command controls B, too.
+  EXPECT_EQ(limiting_branch("flow_side", "A4VSG", 200.0, 100.0), Branch::Angle);
+  EXPECT_EQ(limiting_branch("flow_side", "A4VSG", 100.0, 200.0), Branch::Pressure);
+  // DO5 (|Press CMD - controlled pressure| <= 5 % of p_ref) follows the same choice.
+  for (const auto& [controlled, do5] : std::vector<std::pair<std::string, std::int64_t>>{
+           {"flow_side", 0x00}, {"B", 0x00}, {"A", 0x20}, {"max", 0x20}}) {
+    vtest::Vtvpcd n({{"builtin_plant", "false"}, {"controlled_pressure", controlled}});
+    n.set("pressure_a", 150.0 * 1e5);  // in the window
+    n.set("pressure_b", 100.0 * 1e5);  // outside it
+    ASSERT_EQ(n.write4(0x2C74, to_raw(150.0, kScalePercent)), 0u);
+    n->run_ms(10);
+    EXPECT_EQ(n.raw(0x2F26) & 0x20, do5) << controlled;
+  }
+}
+
+TEST(VtvpcdControl, OverCentrePumpWithPressureBControlledOnTheNegativeSide) {  // A4VSG, controlled_pressure = B
+  // The flow goes to A; B only sees the boost pressure, so the pressure controller never limits.
+  vtest::Vtvpcd n({{"pump_type", "A4VSG"}, {"controlled_pressure", "B"}});
+  n->run_ms(10);
+  ASSERT_EQ(n.write4(0x2C72, -32767), 0u);
+  ASSERT_EQ(n.write4(0x2C74, to_raw(150.0, kScalePercent)), 0u);
+  n->run_ms(3000);
+  EXPECT_NEAR(angle(n), -100.0, 0.1);
+  EXPECT_GT(to_eu(n.raw(0x2F10), kScalePercent), 300.0);  // act. pressure A: load-limited
+  EXPECT_EQ(n.dev().control().branch, Branch::Angle);
+}
+
+TEST(VtvpcdControl, CounterClockwiseOverCentrePumpFailsToThePositiveEnd) {  // A4VSG, x_off_pct > 0
+  // The digest's end position (-100 %) holds for clockwise rotation; a counter-clockwise A4VSG is
+  // configured through the sign of the spring offset.
+  vtest::Vtvpcd n({{"pump_type", "A4VSG"}, {"x_off_pct", "25"}});
+  n.set("enable", 0);
+  n->run_ms(1000);
+  EXPECT_DOUBLE_EQ(n.dev().ports()[0].value[0], 0.25);  // pilot_command
+  EXPECT_EQ(n.raw(0x2F1F), 0);                          // valve CMD reads 0
+  EXPECT_NEAR(to_eu(n.raw(0x2F19), kScaleTable), 25.0, 0.1);  // act. valve
+  EXPECT_NEAR(angle(n), 100.0, 0.1);
 }
 
 TEST(VtvpcdControl, FollowingErrorMonitoring) {  // monitor_enable = true: fault 19

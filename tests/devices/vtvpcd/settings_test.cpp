@@ -20,6 +20,8 @@ TEST(Settings, DocumentedDefaultsParseToTheDefaultSettings) {
   EXPECT_EQ(parsed.p_ref_bar, defaults.p_ref_bar);
   EXPECT_EQ(parsed.plant.k_load, defaults.plant.k_load);
   EXPECT_EQ(parsed.pump_type, defaults.pump_type);
+  EXPECT_EQ(parsed.controlled_pressure, ControlledPressure::FlowSide);
+  EXPECT_EQ(defaults.controlled_pressure, ControlledPressure::FlowSide);
   EXPECT_EQ(parsed.timeout_reaction, defaults.timeout_reaction);
   EXPECT_TRUE(parsed.builtin_plant);
   EXPECT_GE(all.size(), 40u);
@@ -35,6 +37,7 @@ TEST(Settings, RejectsUnknownNamesAndBadValues) {
                                                         {"boot_delay_ms", "-1"},
                                                         {"reset_boot_delay_ms", "101"},
                                                         {"pump_type", "A10V"},
+                                                        {"controlled_pressure", "both"},
                                                         {"p_ref_bar", "0"},
                                                         {"k_pos", "abc"},
                                                         {"node_id_object", "0x2C72"},  // a chapter-4 object
