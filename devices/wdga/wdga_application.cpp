@@ -21,6 +21,9 @@ using cia406::Int128;
 namespace {
 constexpr sim::Duration kCycle = sim::milliseconds(1);
 constexpr std::uint16_t kEmcyEeprom = 0x5000, kEmcyOverrun = 0x8110, kEmcyPassive = 0x8120, kEmcyBusOffRecovered = 0x8140;
+constexpr std::uint16_t kEmcyCommunication = 0x8100, kEmcyHeartbeat = 0x8130;
+/// EMCY info1 of 8100h/8120h [M Tab. 7.9]: low nibble CAN state, high nibble last error (4 CRC).
+constexpr std::uint8_t kInfoBusWarning = 0x46, kInfoErrorActive = 0x01;
 /// Hidden non-volatile cell of the full 64-bit preset offset (6509h shows only 32 bits): stored
 /// with "save all"/"save application", erased by the matching restore.
 constexpr std::uint16_t kOffsetCellIndex = 0x6509;
@@ -224,6 +227,13 @@ void Application::bind_storage() {
         },
         CheckStage::State);
   }
+  if (settings_.restore_at_once) {
+    for (std::uint8_t sub = 1; sub <= 4; ++sub) {
+      od.add_observer(obj::kRestore, sub, [this, sub](OdEntry&, Origin origin) {
+        if (origin == Origin::Sdo) apply_restored_defaults(sub);  // only after a successful "load"
+      });
+    }
+  }
   // Customer data: saved on write, untouched by restore [M §7.12].
   for (std::uint8_t sub = 1; sub <= 8; ++sub) {
     od.add_check(
@@ -235,6 +245,36 @@ void Application::bind_storage() {
     od.add_observer(obj::kCustomerData, sub, [this, sub](OdEntry&, Origin origin) {
       if (origin == Origin::Sdo) node_.store().save_entry(obj::kCustomerData, sub);
     });
+  }
+}
+
+void Application::apply_restored_defaults(std::uint8_t sub) {
+  // The values the stack would load at the next reset: the defaults of every storable entry of
+  // the group (the stack erased the stored ones). Written with Origin::Restore, so the services
+  // take them up at once (heartbeat, PDOs, ...) while the SDO-only rules stay out of the way.
+  // 2100h/2101h are not persistent entries (LSS cells) and 2120h is in no group [M §8.12.2].
+  auto& od = node_.od();
+  const std::uint8_t id = node_.node_id();
+  for (const auto& group : node_.policy().store.groups) {
+    if (group.sub != sub) continue;
+    for (const auto& [first, last] : group.ranges) {
+      for (auto it = od.objects().lower_bound(first); it != od.objects().end() && it->first <= last; ++it) {
+        if (it->first == obj::kStore || it->first == obj::kRestore || it->first == 0x1003) continue;
+        for (const auto& [entry_sub, entry] : it->second.entries) {
+          OdEntry* e = od.entry(it->first, entry_sub);
+          if (!e || !e->persistent || !e->writable()) continue;
+          const canopen::Bytes value = e->default_for_node(id);
+          if (e->value == value) continue;
+          if (od.write(*e, value, Origin::Restore) != SdoAbort::None) e->reset_to_default(id);
+        }
+      }
+    }
+  }
+  if (sub == 1 || sub == 2) node_.rebuild_dispatch();
+  if (sub == 1 || sub == 3) {
+    // Scaling back to the defaults; the erased offset cell means offset 0, as after a reset.
+    measurement_.parameters_changed(node_.now());
+    apply_cyclic_timer();
   }
 }
 
@@ -299,6 +339,24 @@ void Application::set_error_passive(bool active) {
   } else {
     diagnostics_.clear(kEmcyPassive);
   }
+}
+
+void Application::set_bus_warning(bool active) {
+  if (active == bus_warning_) return;
+  bus_warning_ = active;
+  if (!settings_.bus_warning_emcy) return;  // a bus warning is then no error on the bus
+  if (active) {
+    diagnostics_.raise(kEmcyCommunication, kErCommunication, {kInfoBusWarning, 0, 0, 0, 0});
+    return;
+  }
+  // Back to error-active (info1 low nibble 1) unless the controller is still error passive:
+  // 8100h with the register as it is without the warning, then the usual error reset.
+  if (!node_.emergency().active(kEmcyPassive)) {
+    std::uint8_t reg = node_.emergency().error_register();
+    if (!node_.emergency().active(kEmcyHeartbeat)) reg = static_cast<std::uint8_t>(reg & ~kErCommunication);
+    node_.emergency().send_frame(kEmcyCommunication, reg, {kInfoErrorActive, 0, 0, 0, 0});
+  }
+  diagnostics_.clear(kEmcyCommunication);
 }
 
 void Application::receive_overrun() { diagnostics_.signal(kEmcyOverrun, kErCommunication, {0x01, 0, 0, 0, 0}); }

@@ -28,6 +28,9 @@ class Application final : public canopen::Application {
   void set_position_error(bool active);
   void set_eeprom_failure(bool failing);
   void set_error_passive(bool active);
+  /// Bus warning (error counters above 96): EMCY 8100h, and 8100h "back to error-active" when
+  /// it ends (A-32; setting bus_warning_emcy).
+  void set_bus_warning(bool active);
   void receive_overrun();
   void go_bus_off();
   /// Back from bus-off (its own or one made on the wire): EMCY 8140h, then 1029h:01.
@@ -50,6 +53,9 @@ class Application final : public canopen::Application {
   void apply_cyclic_timer();
   void eeprom_error(std::uint8_t info2);
   void stage_offset();
+  /// 1011h sub `sub` succeeded with restore_at_once: the group's values in use become the
+  /// defaults now instead of at the next reset.
+  void apply_restored_defaults(std::uint8_t sub);
 
   canopen::Node& node_;
   const Settings& settings_;
@@ -61,6 +67,7 @@ class Application final : public canopen::Application {
   bool eeprom_failing_ = false;
   bool eeprom_boot_check_ = false;
   bool bus_off_ = false;
+  bool bus_warning_ = false;
   bool bus_off_recovers_ = false;
   sim::Time bus_off_until_{};
 };

@@ -98,6 +98,7 @@ std::vector<devices::FaultInfo> Device::faults() const {
       {"position_error", "sensor fault: 6503h bit 0, 1002h bit 0/1, error register bit 0, 1029h:02"},
       {"eeprom_error", "EEPROM defective: EMCY 5000h (at start-up and on store), saves abort 0x06060000"},
       {"can_error_passive", "CAN controller error passive (CRC errors): EMCY 8120h while active"},
+      {"can_bus_warning", "CAN controller bus warning: EMCY 8100h, and 8100h info 01h back to error-active (bus_warning_emcy)"},
       {"can_overrun", "CAN receive overrun (event on activation): EMCY 8110h"},
       {"bus_off", "CAN bus-off (on activation): silent until power cycle or the 2103h auto-reset (EMCY 8140h)"},
       {"temperature_sensor_failure", "temperature read fails: EMCY 4200h info 40h, 6505h bit 14"},
@@ -112,6 +113,8 @@ std::string Device::inject_fault(std::string_view name, bool active) {
     app_->set_eeprom_failure(active);
   } else if (name == "can_error_passive") {
     app_->set_error_passive(active);
+  } else if (name == "can_bus_warning") {
+    app_->set_bus_warning(active);
   } else if (name == "can_overrun") {
     if (active) app_->receive_overrun();
   } else if (name == "bus_off") {

@@ -1,8 +1,8 @@
 // The WDGA as a vplant device, variants "multiturn" (default) and "singleturn". Ports (SI):
 // angle (rad, continuous and unbounded, clockwise positive), speed (rad/s, its derivative),
-// temperature (°C). Faults: position_error, eeprom_error, can_error_passive, can_overrun (an
-// event), bus_off, temperature_sensor_failure, over_temperature. A power cycle keeps every turn
-// the shaft made (EnDra).
+// temperature (°C). Faults: position_error, eeprom_error, can_error_passive, can_bus_warning,
+// can_overrun (an event), bus_off, temperature_sensor_failure, over_temperature. A power cycle
+// keeps every turn the shaft made (EnDra).
 #pragma once
 
 #include <memory>

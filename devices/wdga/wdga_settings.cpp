@@ -35,6 +35,8 @@ std::string parse_settings(const std::string& variant, const std::map<std::strin
   s.speed_physical_units = units == 1;
   r.get_uint("position_error_emcy", s.position_error_emcy, 0, 0xFFFF);
   r.get("strict_cobid", s.strict_cobid);
+  r.get("restore_at_once", s.restore_at_once);
+  r.get("bus_warning_emcy", s.bus_warning_emcy);
   r.get_uint("temperature_period_s", s.temperature_period_s, 1, 3600);
   r.get_uint("boot_delay_ms", s.boot_delay_ms, 0, 60000);
   r.get("signal", s.signal, 200);

@@ -35,6 +35,8 @@ struct Settings {
   bool speed_physical_units = false;    ///< speed in physical steps (16384/rev) instead of scaled (A-22)
   std::uint16_t position_error_emcy = 0;  ///< EMCY code for 6503h bit 0 (0 = none; A-37 suggests 0x1000)
   bool strict_cobid = false;            ///< TPDO COB-IDs in CiA 301's restricted ranges abort
+  bool restore_at_once = false;         ///< 1011h "load" applies the defaults at once, not at the next reset (A-39)
+  bool bus_warning_emcy = true;         ///< EMCY 8100h for bus warning and back to error-active (A-32)
   unsigned temperature_period_s = 60;
   unsigned boot_delay_ms = 0;
   std::string signal = "hold";          ///< scripted shaft angle for standalone runs (rad, rad/s)

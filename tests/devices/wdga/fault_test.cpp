@@ -1,4 +1,4 @@
-// WDGA errors: temperature (4200h), EEPROM (5000h), CAN controller (8110h, 8120h, 8140h with the
+// WDGA errors: temperature (4200h), EEPROM (5000h), CAN controller (8100h, 8110h, 8120h, 8140h with the
 // bus-off auto-reset 2103h), position error (6503h, 1002h, 1029h:02), EMCY disable and inhibit
 // time, and the histories 1003h, 2502h-2504h (digest checklist 35, 37; vectors §5.5).
 #include "tests/devices/wdga/wdga_fixture.h"
@@ -107,6 +107,48 @@ TEST_F(Faults, ErrorPassiveAndOverrun) {
   EXPECT_EQ(u(0x1001), 0x00u);  // an event, not a lasting condition
   start();
   EXPECT_EQ(device().node().nmt_state(), canopen::NmtState::Operational);  // no state change
+}
+
+TEST_F(Faults, BusWarningSends8100AndBackToErrorActive) {
+  // 8100h info1 46h (CRC errors, bus warning), then 8100h info1 01h (error-active) and the
+  // error reset.
+  ASSERT_EQ(device().inject_fault("can_bus_warning", true), "");
+  EXPECT_EQ(h().take(), Frames{emcy({0x00, 0x81, 0x10, 0x46})});
+  EXPECT_EQ(u(0x1001), 0x10u);
+  EXPECT_EQ(u(0x1003, 1), 0x00468100u);
+  EXPECT_EQ(u(0x2502, 1), 0x00468100u);
+  device().inject_fault("can_bus_warning", true);
+  EXPECT_TRUE(h().take().empty());
+  ASSERT_EQ(device().inject_fault("can_bus_warning", false), "");
+  EXPECT_EQ(h().take(), (Frames{emcy({0x00, 0x81, 0x00, 0x01}), emcy({0x00, 0x00, 0x00})}));
+  EXPECT_EQ(u(0x1001), 0u);
+  EXPECT_EQ(u(0x1003, 0), 1u);  // back to error-active is no error entry
+}
+
+TEST_F(Faults, BusWarningEndingWhileErrorPassiveIsNotErrorActive) {
+  device().inject_fault("can_bus_warning", true);
+  device().inject_fault("can_error_passive", true);
+  EXPECT_EQ(h().take(), (Frames{emcy({0x00, 0x81, 0x10, 0x46}), emcy({0x20, 0x81, 0x10, 0x47})}));
+  device().inject_fault("can_bus_warning", false);
+  EXPECT_TRUE(h().take().empty());
+  EXPECT_EQ(u(0x1001), 0x10u);
+  device().inject_fault("can_error_passive", false);
+  EXPECT_EQ(h().take(), Frames{emcy({0x00, 0x00, 0x00})});
+}
+
+class NoBusWarningEmcy : public WdgaTest {
+ protected:
+  NoBusWarningEmcy() : WdgaTest({{"bus_warning_emcy", "off"}}) {}
+};
+
+TEST_F(NoBusWarningEmcy, BusWarningIsSilent) {
+  ASSERT_EQ(device().inject_fault("can_bus_warning", true), "");
+  h().run_ms(2);
+  EXPECT_TRUE(h().take().empty());
+  EXPECT_EQ(u(0x1001), 0u);
+  ASSERT_EQ(device().inject_fault("can_bus_warning", false), "");
+  h().run_ms(2);
+  EXPECT_TRUE(h().take().empty());
 }
 
 TEST_F(Faults, BusOffStaysUntilPowerCycleWithoutAutoReset) {

@@ -66,6 +66,54 @@ TEST_F(ScriptedShaft, StandaloneSignalTurnsTheShaft) {
   EXPECT_NEAR(static_cast<double>(u(0x6004) - t0), 8192.0, 20.0);
 }
 
+class RestoreAtOnce : public WdgaTest {
+ protected:
+  RestoreAtOnce() : WdgaTest({{"restore_at_once", "on"}}) {}
+};
+
+TEST_F(RestoreAtOnce, LoadAppliesTheDefaultsWithoutAReset) {
+  // A-39 option: the values in use change with the 1011h answer, not at the next reset.
+  ASSERT_EQ(h().write(0x1017, 0, 100, 2), 0u);
+  ASSERT_EQ(h().write(0x2120, 3, 0x12345678, 4), 0u);
+  ASSERT_EQ(h().write(0x2101, 0, 9, 1), 0u);
+  ASSERT_EQ(h().write(0x6001, 0, 4096, 4), 0u);
+  turn_to(0.25);
+  h().run_ms(2);
+  ASSERT_EQ(h().write(0x6003, 0, 100, 4), 0u);
+  EXPECT_EQ(u(0x6004), 100u);
+  h().take();
+  h().run_ms(250);
+  EXPECT_EQ(h().take(), (Frames{Frame(0x77F, {0x7F}), Frame(0x77F, {0x7F})}));
+  EXPECT_EQ(sdo({0x23, 0x11, 0x10, 0x01, 0x6C, 0x6F, 0x61, 0x64}), resp({0x60, 0x11, 0x10, 0x01}));
+  EXPECT_EQ(sdo({0x40, 0x17, 0x10, 0x00}), resp({0x4B, 0x17, 0x10, 0x00, 0x00, 0x00}));
+  EXPECT_EQ(u(0x6001), 16384u);
+  EXPECT_EQ(u(0x6003), 0u);
+  h().run_ms(2);
+  EXPECT_EQ(u(0x6004), 4096u);  // offset gone, default scaling
+  h().take();
+  h().run_ms(500);
+  EXPECT_TRUE(h().take().empty());  // the heartbeat stopped at once
+  EXPECT_EQ(id(), 127);             // node-ID, bit rate and customer data are not restored
+  EXPECT_EQ(u(0x2101), 9u);
+  EXPECT_EQ(u(0x2120, 3), 0x12345678u);
+}
+
+TEST_F(RestoreAtOnce, CommunicationGroupOnlyAndCobIdsTrackAgain) {
+  ASSERT_EQ(h().write(0x1010, 1, kSave, 4), 0u);  // freezes the COB-IDs
+  ASSERT_EQ(h().write(0x1800, 1, 0x40000190, 4), 0u);
+  ASSERT_EQ(h().write(0x6001, 0, 4096, 4), 0u);
+  EXPECT_EQ(sdo({0x23, 0x11, 0x10, 0x02, 0x6C, 0x6F, 0x61, 0x64}), resp({0x60, 0x11, 0x10, 0x02}));
+  EXPECT_EQ(u(0x1800, 1), 0x400001FFu);
+  EXPECT_EQ(u(0x6001), 4096u);  // application group untouched
+  start();
+  h().take();
+  turn_to(0.5);
+  h().run_ms(3);
+  const auto frames = h().take();
+  ASSERT_FALSE(frames.empty());
+  for (const auto& f : frames) EXPECT_EQ(f.id, 0x1FFu);
+}
+
 TEST(WdgaSettings, BadValuesAreRejected) {
   Settings s;
   EXPECT_NE(parse_settings("", {{"total_range_max", "0"}}, s), "");
