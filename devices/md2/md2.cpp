@@ -36,6 +36,7 @@ Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
   // Dynamic mapping (§5.4.16): PDO parameters only in Pre-operational (§2.5), mapping only while
   // the PDO is disabled and sub 0 is 0; COB-IDs may change at any time there.
   policy.parameters_preop_only = options_.pdo_params_preop_only;
+  policy.type255.on_change = options_.tpdo255_on_change;  // digest §7 #32: option for change-driven sending
   policy.cobid_change_requires_invalid = false;
   policy.mapping_requires_invalid = true;
   policy.mapping_entry_requires_sub0_zero = true;

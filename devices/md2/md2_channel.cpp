@@ -240,10 +240,10 @@ void Md2Channel::process(sim::Time now, double dt) {
     ia = on_a ? o_.i_max_a : 0.0;
     ib = on_b ? o_.i_max_b : 0.0;
   } else {
-    // The dead band applies to the open-loop command; a closed loop already compensates it (any
-    // demand opens the valve: current Imin + span·|u|).
+    // The dead band applies in every mode (digest §5.1 step 5); deadband_modes=open_loop keeps it
+    // off the closed loops' output (any demand opens the valve: current Imin + span·|u|).
     dsp408::SolenoidCurve a = curve_a_, b = curve_b_;
-    if (is_closed_loop(m)) a.threshold = b.threshold = 0;
+    if (!o_.deadband_all_modes && is_closed_loop(m)) a.threshold = b.threshold = 0;
     ia = u > 0 ? dsp408::solenoid_current(a, u) : 0.0;
     ib = u < 0 ? dsp408::solenoid_current(b, -u) : 0.0;
   }

@@ -1,7 +1,7 @@
 // One MD2 channel: DSP 408 device control plus the signal chain of §5 of the digest.
 //   set point (bus object of the control mode, or the local command input)
 //   → state gating (ACTIVE live, HOLD frozen, otherwise off)
-//   → ramp (modes 1, 3) or Speed± rate limitation (modes 6, 7, 9)
+//   → ramp (modes 1, 3) or Speed± rate limitation (setting speed_modes, 6, 7, 9)
 //   → mode function (open loop, PID closed loop, n-point switching) → u ∈ [−1, 1]
 //   → solenoid current Imin + (Imax − Imin)·|u| above the dead band → dither → outputs.
 #pragma once
@@ -59,7 +59,7 @@ class Md2Channel {
   void publish_measurements();
   dsp408::StatusFlags status_flags() const;
   bool ramp_mode(std::int8_t m) const { return m == mode::kVpoc || m == mode::kVprcOpen; }
-  bool speed_mode(std::int8_t m) const { return m == mode::kDcol || m == mode::kDsc || m == mode::kDpc; }
+  bool speed_mode(std::int8_t m) const { return o_.is_speed_mode(m); }
 
   const Md2Options& o_;
   ChannelIndices ix_;

@@ -129,7 +129,10 @@ std::vector<std::uint32_t> default_tpdo_mapping(const Md2Options& o, int channel
 
 ObjectDictionary build_object_dictionary(const Md2Options& o) {
   ObjectDictionary od;
-  canopen::add_communication_objects(od, wandfluh::communication_profile(o.device_type, o.common));
+  auto profile = wandfluh::communication_profile(o.device_type, o.common);
+  profile.revision = o.identity_revision;  // "configurable" (digest §1.1)
+  profile.serial = o.identity_serial;
+  canopen::add_communication_objects(od, profile);
   for (int n = 1; n <= kPdoCount; ++n) {
     const bool has_channel = n <= 4 && n <= o.channels;
     const auto base = static_cast<std::uint32_t>(0x100 * (n - 1));

@@ -71,10 +71,35 @@ std::string Md2Options::read(const devices::DeviceOptions& options) {
   vpoc_mapping_literal = s.flag("vpoc_mapping_literal", false);
   tpdo_actual_value = s.flag("tpdo_actual_value", true);
   pdo_params_preop_only = s.flag("pdo_params_preop_only", true);
+  identity_revision = static_cast<std::uint32_t>(s.integer("identity_revision", 0));
+  identity_serial = static_cast<std::uint32_t>(s.integer("identity_serial", 0));
+  tpdo255_on_change = s.flag("tpdo255_on_change", false);
+  const std::string speed_list = s.text("speed_modes", "6,7,9");
+  deadband_all_modes = s.choice("deadband_modes", "all", {"all", "open_loop"}) == "all";
   if (!find_unit(unit_name, unit)) return "setting 'unit': unknown unit '" + unit_name + "'";
   setpoint_max = s.number("setpoint_max", unit.max);
   if (auto e = s.finish(); !e.empty()) return e;
 
+  speed_modes.clear();
+  for (std::size_t pos = 0; pos < speed_list.size();) {
+    std::size_t end = speed_list.find(',', pos);
+    if (end == std::string::npos) end = speed_list.size();
+    const std::string item = speed_list.substr(pos, end - pos);
+    pos = end + 1;
+    if (item.empty()) continue;
+    std::size_t used = 0;
+    int m = 0;
+    try {
+      m = std::stoi(item, &used);
+    } catch (...) {
+      used = 0;
+    }
+    // Modes 1 and 3 have their ramp, 0 drives nothing: Speed± can only apply to the others.
+    if (used != item.size() || !(m == 4 || m == 6 || m == 7 || m == 9 || (m >= -8 && m <= -5))) {
+      return "setting 'speed_modes': '" + item + "' is not a control mode with a set point to limit (4, 6, 7, 9, -5..-8)";
+    }
+    speed_modes.push_back(static_cast<std::int8_t>(m));
+  }
   if (channels < 1 || channels > 8) return "setting 'channels' must be 1..8";
   if (solenoids != 1 && solenoids != 2) return "setting 'solenoids' must be 1 or 2";
   if (!(i_min_a >= 0 && i_min_a <= i_max_a && i_min_b >= 0 && i_min_b <= i_max_b)) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "devices/device.h"
 #include "devices/profiles/wandfluh/communication.h"
@@ -56,6 +57,18 @@ struct Md2Options {
   bool vpoc_mapping_literal = false;  ///< RPDOs map "command value VPOC" (0x6300) in modes 3, 4, −5 too
   bool tpdo_actual_value = true;      ///< closed-loop default TPDO carries the actual value
   bool pdo_params_preop_only = true;  ///< PDO parameters refused (0x08000022) in Operational
+  std::uint32_t identity_revision = 0;  ///< 0x1018:03 (shown with identity_entries=4)
+  std::uint32_t identity_serial = 0;    ///< 0x1018:04 (shown with identity_entries=4)
+  bool tpdo255_on_change = false;       ///< type-255 TPDOs also sent when their mapped data change
+  std::vector<std::int8_t> speed_modes = {6, 7, 9};  ///< control modes rate-limited by Speed±
+  bool deadband_all_modes = true;       ///< dead band in every mode (false: open-loop modes only)
+
+  bool is_speed_mode(std::int8_t m) const {
+    for (auto s : speed_modes) {
+      if (s == m) return true;
+    }
+    return false;
+  }
 
   /// Reads `options`; returns an error message (empty on success).
   std::string read(const devices::DeviceOptions& options);

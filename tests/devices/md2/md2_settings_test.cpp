@@ -50,10 +50,75 @@ TEST_F(Md2Test, SettingOutputsNeedOperational) {
   EXPECT_NEAR(ch().solenoid_a, 0.6, 1e-9);
 }
 
+TEST_F(Md2Test, SettingIdentityRevisionAndSerial) {
+  make({{"identity_entries", "4"}, {"identity_revision", "0x00010002"}, {"identity_serial", "123456"}});
+  EXPECT_EQ(sdo({0x40, 0x18, 0x10, 0x03}), Frames{resp({0x43, 0x18, 0x10, 0x03, 0x02, 0x00, 0x01, 0x00})});
+  EXPECT_EQ(sdo({0x40, 0x18, 0x10, 0x04}), Frames{resp({0x43, 0x18, 0x10, 0x04, 0x40, 0xE2, 0x01, 0x00})});
+  make({{"identity_entries", "4"}});  // default: 0
+  EXPECT_EQ(sdo({0x40, 0x18, 0x10, 0x03}), Frames{resp({0x43, 0x18, 0x10, 0x03, 0x00, 0x00, 0x00, 0x00})});
+}
+
+TEST_F(Md2Test, SettingTpdo255OnChange) {
+  // Default: a type-255 TPDO goes out only after its RPDO, not when the status word changes.
+  start();
+  auto frames = sdo({0x2B, 0x40, 0x60, 0x00, 0x07, 0x00});
+  h->run_ms(2);
+  for (const auto& f : h->take()) frames.push_back(f);
+  EXPECT_EQ(frames, Frames{resp({0x60, 0x40, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00})});
+  // Option: also sent when the mapped data change (first time at once in Operational).
+  make({{"tpdo255_on_change", "true"}, {"channels", "1"}});  // TPDO2-4 disabled
+  h->nmt(0x01, 0);
+  h->run_ms(2);
+  EXPECT_EQ(h->take(), Frames{Frame(0x181, {0x08, 0x00})});
+  frames = sdo({0x2B, 0x40, 0x60, 0x00, 0x07, 0x00});
+  h->run_ms(2);
+  for (const auto& f : h->take()) frames.push_back(f);
+  EXPECT_EQ(frames, (Frames{resp({0x60, 0x40, 0x60, 0x00, 0x00, 0x00, 0x00, 0x00}), Frame(0x181, {0x0F, 0x00})}));
+  h->run_ms(10);
+  EXPECT_EQ(h->take(), Frames{});  // no change, no frame
+}
+
+TEST_F(Md2Test, SettingSpeedModes) {
+  // Mode 9 with Speed+ 10 mm/s: rate-limited by default, not with speed_modes=6,7.
+  const auto run = [this](std::map<std::string, std::string> settings) {
+    settings["dither_level"] = "0";
+    settings["unit"] = "mm/s";
+    settings["deadband_modes"] = "open_loop";
+    make(settings, "controller");
+    EXPECT_EQ(sdo({0x2F, 0x43, 0x60, 0x00, 0x09}), Frames{resp({0x60, 0x43, 0x60, 0x00, 0, 0, 0, 0})});
+    EXPECT_EQ(sdo({0x23, 0x00, 0x24, 0x00, 0x10, 0x27, 0x00, 0x00}), Frames{resp({0x60, 0x00, 0x24, 0x00, 0, 0, 0, 0})});
+    EXPECT_EQ(sdo({0x23, 0x00, 0x66, 0x01, 0xA0, 0x86, 0x01, 0x00}), Frames{resp({0x60, 0x00, 0x66, 0x01, 0, 0, 0, 0})});
+    EXPECT_EQ(sdo({0x2B, 0x40, 0x60, 0x00, 0x07, 0x00}), Frames{resp({0x60, 0x40, 0x60, 0x00, 0, 0, 0, 0})});
+    h->run_ms(500);
+    return ch().solenoid_a;
+  };
+  EXPECT_NEAR(run({}), 0.2 + 0.8 * 5000 / 2e6, 1e-5);                       // r = 5000 after 0.5 s
+  EXPECT_NEAR(run({{"speed_modes", "6,7"}}), 0.2 + 0.8 * 100000 / 2e6, 1e-9);  // r = w at once
+}
+
+TEST_F(Md2Test, SettingDeadbandModes) {
+  // Mode 9, deviation 1000 of 2000000 (u = 0.0005, inside the 1 % dead band).
+  const auto run = [this](std::map<std::string, std::string> settings) {
+    settings["dither_level"] = "0";
+    make(settings, "controller");
+    EXPECT_EQ(sdo({0x2F, 0x43, 0x60, 0x00, 0x09}), Frames{resp({0x60, 0x43, 0x60, 0x00, 0, 0, 0, 0})});
+    EXPECT_EQ(sdo({0x2F, 0x00, 0x22, 0x00, 0x01}), Frames{resp({0x60, 0x00, 0x22, 0x00, 0, 0, 0, 0})});
+    EXPECT_EQ(sdo({0x23, 0x00, 0x66, 0x01, 0xA0, 0x86, 0x01, 0x00}), Frames{resp({0x60, 0x00, 0x66, 0x01, 0, 0, 0, 0})});
+    EXPECT_EQ(sdo({0x23, 0x02, 0x22, 0x00, 0xB8, 0x82, 0x01, 0x00}), Frames{resp({0x60, 0x02, 0x22, 0x00, 0, 0, 0, 0})});
+    EXPECT_EQ(sdo({0x2B, 0x40, 0x60, 0x00, 0x07, 0x00}), Frames{resp({0x60, 0x40, 0x60, 0x00, 0, 0, 0, 0})});
+    h->run_ms(2);
+    EXPECT_EQ(sdo({0x40, 0x50, 0x66, 0x01}), Frames{resp({0x43, 0x50, 0x66, 0x01, 0xE8, 0x03, 0x00, 0x00})});
+    return ch().solenoid_a;
+  };
+  EXPECT_EQ(run({}), 0.0);  // digest §5.1 step 5: the dead band in every mode
+  EXPECT_NEAR(run({{"deadband_modes", "open_loop"}}), 0.2 + 0.8 * 1000 / 2e6, 1e-9);
+}
+
 TEST_F(Md2Test, SettingsAreValidated) {
   for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{
            {"nosuch", "1"}, {"channels", "9"}, {"kp", "fast"}, {"i_min_a", "2"}, {"unit", "furlong"},
-           {"dither_shape", "triangle"}, {"solenoids", "3"}}) {
+           {"dither_shape", "triangle"}, {"solenoids", "3"},
+           {"speed_modes", "1"}, {"speed_modes", "6,x"}, {"deadband_modes", "closed"}, {"identity_serial", "abc"}}) {
     devices::DeviceOptions o;
     o.settings[name] = value;
     std::string error;

@@ -165,14 +165,15 @@ TEST_F(Md2ChainTest, PressureClosedLoopWithLocalSensor) {
 }
 
 TEST_F(Md2ChainTest, VelocityLoopDrivesBothWaysAndSpeedLimitsTheSetPoint) {
-  make({{"dither_level", "0"}, {"unit", "mm/s"}}, "controller");
+  // The small loop outputs below are inside the 1 % dead band of the default (every mode).
+  make({{"dither_level", "0"}, {"unit", "mm/s"}, {"deadband_modes", "open_loop"}}, "controller");
   ASSERT_EQ(write(0x6043, 0, 9, 1), 0u);
   ASSERT_EQ(write(0x2400, 0, 10000, 4), 0u);  // Speed+ 10 mm/s
   ASSERT_EQ(dev->set_input("actual", 0.0), "");
   ASSERT_EQ(write(0x6600, 1, 100000, 4), 0u);  // 100 mm/s ... as position in this unit
   active();
   // Pure P loop (kp 1, ki 0): u = (r − y) / span with span = 2 000 000 for mm/s, and the current
-  // Imin + (Imax − Imin)·u (no dead band in a closed loop). r, the set point rate-limited to
+  // Imin + (Imax − Imin)·u (dead band off in the closed loop here). r, the set point rate-limited to
   // Speed+, climbs 10000 per second; unlimited it would be 100000 at once (0.24 A).
   const auto current_for = [](double r) { return 0.2 + 0.8 * r / 2e6; };
   const double tick = 0.8 * 10 / 2e6;  // one 1 ms control cycle of the ramp
