@@ -24,6 +24,7 @@ constexpr std::uint16_t kGeneral = 0x1000, kOutputCurrent = 0x2300, kSupplyLow =
 constexpr std::uint8_t kRegGeneric = 0x01, kRegCurrent = 0x03, kRegVoltage = 0x05;
 constexpr std::uint16_t kSetpoints[] = {0x6300, 0x6380, 0x6480, 0x6500, 0x6600, 0x6B00, 0x6B80};
 constexpr std::uint16_t kMeasured[] = {0x6381, 0x6501, 0x6601, 0x63D0, 0x6550, 0x6650};
+constexpr std::uint16_t kAlias = 0x230E, kAliasTarget = 0x250E;
 
 std::uint32_t mapping_entry(std::uint16_t index, std::uint8_t sub, std::uint8_t bits) {
   return static_cast<std::uint32_t>(index) << 16 | static_cast<std::uint32_t>(sub) << 8 | bits;
@@ -62,6 +63,9 @@ Dsv::Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
   input_ = std::make_unique<ActualValueInput>(*parameters_, options_);
   chain_ = std::make_unique<DsvSignalChain>(*parameters_, *input_, *control_, options_, n.od());
   control_->set_status_flags([this] { return chain_->status_flags(); });
+  control_->dsm().set_fault_hold(options_.fault_hold);
+  control_->dsm().set_strict_reset_sources(options_.strict_fault_reset);
+  set_restore_keeps_address(options_.restore_keeps_address);
   control_->dsm().set_listener([this](dsp408::DeviceState from, dsp408::DeviceState to) { chain_->on_state_change(from, to); });
   install_device_hooks();
 
@@ -80,8 +84,29 @@ void Dsv::install_device_hooks() {
   if (options_.objects_follow_mode) {
     od.set_visibility([this](std::uint16_t index) {
       const ModeSet m = modes_of(index);
+      if (index == kAlias && options_.alias_230e_mode7 && parameters_->control_mode() == mode::kDsc) return true;
       return m == 0 || in(m, parameters_->control_mode());
     });
+  }
+  if (options_.alias_230e_mode7) {
+    // the overview table names 230Eh for the I-window inside negative of mode 7. In mode 7
+    // 230Eh:01 reads and writes 250Eh:01; its own (mode 4) value is kept aside meanwhile.
+    auto aliased = [this] { return parameters_->control_mode() == mode::kDsc; };
+    od.add_read_hook(kAlias, 1, [this, aliased](OdEntry& e, Origin) {
+      if (!aliased()) return SdoAbort::None;
+      if (!alias_saved_) alias_saved_ = e.value;
+      e.value = node_owner_->od().entry(kAliasTarget, 1)->value;
+      return SdoAbort::None;
+    });
+    od.add_check(
+        kAlias, 1,
+        [this, aliased](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
+          if (!aliased()) return SdoAbort::None;
+          if (!alias_saved_) alias_saved_ = e.value;
+          return node_owner_->od().write(kAliasTarget, 1, data, origin);
+        },
+        CheckStage::Value);
+    od.add_observer(kAlias, 1, [this](OdEntry&, Origin) { restore_alias_entry(); });
   }
   od.on_write<std::int8_t>(0x6043, 0, [this](std::int8_t m, Origin) {
     return mode_supported(options_.variant, m) ? SdoAbort::None : SdoAbort::ParameterIncompatible;
@@ -149,6 +174,7 @@ void Dsv::install_device_hooks() {
       od.add_check(
           index, sub,
           [this, index](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+            restore_alias_entry();  // 230Eh:01 is saved with its own value
             const auto v = static_cast<std::uint32_t>(canopen::decode_unsigned(data));
             const bool signature = v == (index == 0x1010 ? canopen::StoreRestore::kSaveSignature : canopen::StoreRestore::kLoadSignature);
             if (origin == Origin::Sdo && signature && faults_.memory_failure) errors().latch(kRam, kRegGeneric);
@@ -179,6 +205,12 @@ void Dsv::reset_model() {
 
 void Dsv::restore_mapping_entry() {
   if (mapping_mode_ == mode::kVprcClosed) dsp408::put(*node_owner_->od().entry(0x1A01, 2), tpdo2_internal_);
+}
+
+void Dsv::restore_alias_entry() {
+  if (!alias_saved_) return;
+  node_owner_->od().entry(kAlias, 1)->value = *alias_saved_;
+  alias_saved_.reset();
 }
 
 void Dsv::regenerate_pdos() {
@@ -248,6 +280,7 @@ void Dsv::process(sim::Time now, sim::Duration dt) {
   temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
   dsp408::put_rounded(*temperature_entry_, temperature_, -55, 150);
   restore_mapping_entry();
+  restore_alias_entry();
 }
 
 sim::PortList Dsv::ports() {

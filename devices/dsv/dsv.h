@@ -17,6 +17,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
   void install_device_hooks();
   void detect_errors();
   void restore_mapping_entry();
+  void restore_alias_entry();
 
   DsvOptions options_;
   std::unique_ptr<canopen::Node> node_owner_;
@@ -76,6 +78,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
   std::int8_t mapping_mode_ = 0;     ///< control mode the PDO set was generated for
   std::uint32_t tpdo2_internal_ = 0; ///< 1A01h:02 as the PDO service resolves it
   bool curve_restore_pending_ = false;
+  std::optional<canopen::Bytes> alias_saved_;  ///< 230Eh:01's own (mode 4) value while it shows 250Eh:01
   bool open_a_detected_ = false, open_b_detected_ = false;  ///< an open circuit seen while driven
 
   // Ports and fault conditions.

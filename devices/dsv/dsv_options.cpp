@@ -35,6 +35,10 @@ std::string DsvOptions::read(const devices::DeviceOptions& options) {
   op_mode1_bipolar = s.flag("op_mode1_bipolar", op_mode1_bipolar);
   m4_tpdo_six_bytes = s.flag("m4_tpdo_six_bytes", m4_tpdo_six_bytes);
   quantise_on_write = s.flag("quantise_on_write", quantise_on_write);
+  restore_keeps_address = s.flag("restore_keeps_address", restore_keeps_address);
+  alias_230e_mode7 = s.flag("alias_230e_mode7", alias_230e_mode7);
+  strict_fault_reset = s.flag("strict_fault_reset", strict_fault_reset);
+  fault_hold = s.flag("fault_hold", fault_hold);
   cable_break_ma = s.number("cable_break_ma", cable_break_ma);
   supply_min = s.number("u_supply_min", supply == 12 ? 9.0 : 18.0);
   sensor_min = s.number("sensor_min", sensor_min);

@@ -35,6 +35,10 @@ struct DsvOptions {
   bool op_mode1_bipolar = false;      ///< A-33: op-mode 1 split like op-mode 2 instead of 50 % centre
   bool m4_tpdo_six_bytes = false;     ///< A-04: TPDO2 of mode 4 carries the actual value in 4 bytes
   bool quantise_on_write = false;     ///< A-52: written values truncated to the resolution step
+  bool restore_keeps_address = false; ///< A-18: a restore leaves 2000h/2001h alone
+  bool alias_230e_mode7 = false;      ///< A-21: in mode 7, 230Eh:01 is another name for 250Eh:01
+  bool strict_fault_reset = false;    ///< A-36: TR_10 only from FAULT, TR_11 only from FAULT_HOLD
+  bool fault_hold = false;            ///< A-36: the fault reaction ends in FAULT_HOLD (TR_9)
   double cable_break_ma = 3.0;        ///< below this (4..20 mA input) the cable is broken
   double supply_min = 18;             ///< V: below → EMCY 0x3412
   double sensor_min = 0, sensor_max = 1;  ///< SI measurand at the bottom / top of the signal range

@@ -68,7 +68,13 @@ void DsvSignalChain::reset() {
 }
 
 void DsvSignalChain::on_state_change(DeviceState from, DeviceState to) {
-  if (to != DeviceState::Hold) return;
+  if (to == DeviceState::FaultReaction) before_fault_ = from;
+  // FAULT_HOLD (option fault_hold, TR_9) holds like HOLD, judged by the state before the fault;
+  // TR_11 from FAULT_HOLD keeps holding that set point.
+  if (to == DeviceState::FaultHold) from = before_fault_;
+  if (to == DeviceState::Hold && from == DeviceState::FaultHold) return;
+  if (to != DeviceState::Hold && to != DeviceState::FaultHold) return;
+  if (from == DeviceState::Hold) return;  // FAULT_HOLD entered from HOLD: the same hold set point
   if (from == DeviceState::Active) {
     hold_w_ = limiter_.output();  // closed loop; the open-loop ramps simply stop
   } else {

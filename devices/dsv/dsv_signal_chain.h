@@ -70,6 +70,7 @@ class DsvSignalChain {
   dsp408::RateLimiter limiter_;
   dsp408::PidController pid_;
   dsp408::Dither dither_;
+  dsp408::DeviceState before_fault_ = dsp408::DeviceState::Init;  ///< state that TR_8 left
   double hold_w_ = 0;
   double last_w_ = 0, last_x_ = 0, last_e_ = 0;
   double target_ = 0, target_b_ = 0;  // ramp targets (for "ramp running")

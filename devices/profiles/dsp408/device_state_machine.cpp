@@ -69,6 +69,7 @@ void DeviceStateMachine::evaluate(bool reset_edge) {
       case DeviceState::FaultHold:
         if (!reset_edge) return;
         reset_edge = false;  // one edge resets once
+        if (strict_reset_ && (state_ == DeviceState::Fault) == h) return;  // TR_10 only from FAULT, TR_11 only from FAULT_HOLD
         if (fault_reset_ && !fault_reset_()) return;
         go(h ? DeviceState::Hold : DeviceState::Disabled);  // TR_11 / TR_10
         continue;
@@ -86,7 +87,8 @@ bool DeviceStateMachine::error() {
     case DeviceState::Hold:
     case DeviceState::Active:
       go(DeviceState::FaultReaction);  // TR_8
-      go(DeviceState::Fault);          // TR_12: every reaction of these products disables
+      // TR_12: every reaction of these products disables; TR_9 (FAULT_HOLD) only as an option.
+      go(fault_hold_ ? DeviceState::FaultHold : DeviceState::Fault);
       return true;
     default: return false;
   }

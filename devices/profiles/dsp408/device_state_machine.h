@@ -34,7 +34,7 @@ class DeviceStateMachine {
   void write_control_word(std::uint16_t cw);
   std::uint16_t control_word() const { return cw_; }
 
-  /// TR_8 → FAULT_REACTION → TR_12 → FAULT from INIT, DISABLED, HOLD or ACTIVE (an error).
+  /// TR_8 → FAULT_REACTION → TR_12 → FAULT (TR_9 → FAULT_HOLD with set_fault_hold) from INIT, DISABLED, HOLD or ACTIVE (an error).
   /// Returns true if the state changed.
   bool error();
   /// TR_8 forced by the communication state machine (NMT Stop, Reset Communication, life
@@ -56,6 +56,12 @@ class DeviceStateMachine {
   /// TR_4 is possible only with a control mode selected (MD2/DSV: mode 0 has no function).
   void set_active_allowed(bool allowed);
 
+  /// Options (both off by default): the fault reaction ends in FAULT_HOLD (TR_9) instead of
+  /// FAULT (TR_12); the fault reset takes the strict CiA sources only (TR_10 from FAULT with
+  /// H = 0, TR_11 from FAULT_HOLD with H = 1; any other R edge does nothing).
+  void set_fault_hold(bool on) { fault_hold_ = on; }
+  void set_strict_reset_sources(bool on) { strict_reset_ = on; }
+
   DeviceState state() const { return state_; }
 
  private:
@@ -67,6 +73,8 @@ class DeviceStateMachine {
   bool enable_ = true;
   bool local_ = false;
   bool active_allowed_ = true;
+  bool fault_hold_ = false;
+  bool strict_reset_ = false;
   Listener listener_;
   FaultReset fault_reset_;
 };

@@ -57,6 +57,15 @@ void ValveApplication::on_reset_application() {
     }
   }
   if (seeded) node_.store().load_area(0x2000, 0xFFFF);
+  if (restore_keeps_address_) {
+    // A pending restore reset 0x2000/0x2001 to their defaults: back to the stored values, as
+    // without a restore.
+    for (std::uint16_t index : {NodeAddress::kNodeAddress, NodeAddress::kBitRate}) {
+      const auto* v = memory.find(index, 0);
+      auto* e = node_.od().entry(index, 0);
+      if (v && e && v->bytes.size() == e->value.size()) e->value = v->bytes;
+    }
+  }
   errors_.clear();
   for (int i = 0; i < channel_count(); ++i) channel(i).power_on();
   reset_model();
@@ -66,7 +75,17 @@ void ValveApplication::on_reset_communication() {
   if (reset_communication_requested_ && application_restore_pending_) {
     // "The default values are set valid after the device is reset by a communication reset"
     // (§5.4.11): the application group too, not only at Reset Node.
+    canopen::Bytes kept[2];
+    const std::uint16_t address_objects[2] = {NodeAddress::kNodeAddress, NodeAddress::kBitRate};
+    for (int i = 0; i < 2; ++i) {
+      if (auto* e = node_.od().entry(address_objects[i], 0)) kept[i] = e->value;
+    }
     node_.store().load_area(0x2000, 0xFFFF);
+    if (restore_keeps_address_) {  // as without a restore: the values in use (saved or not) stay
+      for (int i = 0; i < 2; ++i) {
+        if (auto* e = node_.od().entry(address_objects[i], 0)) e->value = kept[i];
+      }
+    }
     for (int i = 0; i < channel_count(); ++i) channel(i).refresh_source();
   }
   reset_communication_requested_ = false;

@@ -49,6 +49,9 @@ class ValveApplication : public canopen::Application {
 
   /// Call once the channels exist: fault-reset and error hooks, guarding lock, restore tracking.
   void install();
+  /// Option (DSV A-18, off by default): a restore of all / application defaults leaves the node
+  /// address 0x2000 and bit rate 0x2001 alone; they behave as if no restore were pending.
+  void set_restore_keeps_address(bool on) { restore_keeps_address_ = on; }
   /// Option outputs_need_operational: the solenoids carry current only in NMT Operational.
   bool outputs_allowed() const {
     return !common_.outputs_need_operational || node_.nmt_state() == canopen::NmtState::Operational;
@@ -72,6 +75,7 @@ class ValveApplication : public canopen::Application {
   bool reset_communication_requested_ = false;  ///< Reset Communication (not Reset Node) running
   bool fault_after_boot_up_ = false;
   bool application_restore_pending_ = false;
+  bool restore_keeps_address_ = false;
 };
 
 }  // namespace wandfluh

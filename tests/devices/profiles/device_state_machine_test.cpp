@@ -147,3 +147,35 @@ TEST_F(Fixture, LocalOperationFollowsTheEnableInputEdges) {
   dsm.set_enable_input(false);
   EXPECT_EQ(dsm.state(), DeviceState::Disabled);
 }
+
+TEST_F(Fixture, FaultHoldOptionTakesTr9) {
+  dsm.set_fault_hold(true);
+  dsm.write_control_word(0x0007);
+  log.clear();
+  EXPECT_TRUE(dsm.error());
+  EXPECT_EQ(sw(), 0x3);
+  ASSERT_EQ(log.size(), 2u);
+  EXPECT_EQ(log[1].second, DeviceState::FaultHold);
+  EXPECT_FALSE(dsm.error());
+  dsm.write_control_word(0x000F);  // TR_11 → HOLD → TR_4
+  EXPECT_EQ(dsm.state(), DeviceState::Active);
+}
+
+TEST_F(Fixture, StrictResetSourcesOption) {
+  dsm.set_strict_reset_sources(true);
+  dsm.write_control_word(0x0007);
+  dsm.error();                       // FAULT
+  dsm.write_control_word(0x000F);    // R edge with H = 1: TR_11 needs FAULT_HOLD
+  EXPECT_EQ(dsm.state(), DeviceState::Fault);
+  dsm.write_control_word(0x0001);
+  dsm.write_control_word(0x0009);    // TR_10
+  EXPECT_EQ(sw(), 0x9);
+  dsm.set_fault_hold(true);
+  dsm.error();                       // FAULT_HOLD
+  dsm.write_control_word(0x0001);
+  dsm.write_control_word(0x0009);    // R edge with H = 0: TR_10 needs FAULT
+  EXPECT_EQ(dsm.state(), DeviceState::FaultHold);
+  dsm.write_control_word(0x0003);
+  dsm.write_control_word(0x000B);    // TR_11
+  EXPECT_EQ(sw(), 0xB);
+}
