@@ -106,6 +106,9 @@ struct PdoPolicy {
   bool event_timer_restart_on_write = false;
   /// Remote request whose DLC differs from the TPDO length.
   enum class RtrDlcMismatch : std::uint8_t { Answer, EmptyFrame, Ignore } rtr_dlc_mismatch = RtrDlcMismatch::Answer;
+  /// TPDOs go out with DLC 8, the bytes after the mapped ones 0 (manuals that draw every PDO as
+  /// 8 bytes with "not used" fields); a remote request must then ask for 8 bytes.
+  bool pad_tpdo_to_8 = false;
   /// RPDO shorter than its mapping: EMCY 0x8210 (CiA 301) or silently ignored. Longer: 0x8220.
   bool rpdo_length_emcy = true;
   bool rpdo_too_long_is_error = true;

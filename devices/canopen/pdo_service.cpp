@@ -304,11 +304,15 @@ void PdoService::sample(Tpdo& t, std::array<std::uint8_t, 8>& out) {
   pack_pdo(t.mapping, out);
 }
 
+std::uint8_t PdoService::wire_length(const Tpdo& t) const {
+  return node_.policy().pdo.pad_tpdo_to_8 ? 8 : static_cast<std::uint8_t>(t.mapping.length);
+}
+
 void PdoService::transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim::Time now) {
   sim::CanFrame f;
   f.id = t.cob_id;
   f.extended = t.extended;
-  f.dlc = t.mapping.length;
+  f.dlc = wire_length(t);
   f.data = data;
   node_.send(f);
   t.last_sent = data;
@@ -387,7 +391,7 @@ void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time n
   auto it = std::find_if(tpdos_.begin(), tpdos_.end(), [number](const Tpdo& t) { return t.number == number; });
   if (it == tpdos_.end() || !it->valid || !it->rtr_allowed || it->mapping.length == 0) return;
   Tpdo& t = *it;
-  if (frame.dlc != t.mapping.length) {
+  if (frame.dlc != wire_length(t)) {
     switch (node_.policy().pdo.rtr_dlc_mismatch) {
       case PdoPolicy::RtrDlcMismatch::Ignore: return;
       case PdoPolicy::RtrDlcMismatch::EmptyFrame: {

@@ -100,6 +100,7 @@ class PdoService {
   void apply_rpdo(Rpdo& p);
   void sample(Tpdo& t, std::array<std::uint8_t, 8>& out);
   void transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim::Time now);
+  std::uint8_t wire_length(const Tpdo& t) const;  ///< DLC on the bus: the mapped length, or 8 padded
   void try_send_event(Tpdo& t, sim::Time now);
   const PdoPolicy::AsyncTriggers* async_triggers(const Tpdo& t) const;
   std::uint16_t event_timer_ms(const Pdo& p) const;

@@ -55,6 +55,7 @@ Dsv::Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
   pdo.width_conversion = options_.m4_tpdo_six_bytes;
   pdo.parameters_preop_only = false;  // "can be changed in any way required by the user"
   pdo.dummy_mapping = false;          // the mapping is fixed
+  pdo.pad_tpdo_to_8 = options_.pdo_padding;
 
   dsp408::ChannelObjects objects = dsp408::ChannelObjects::for_channel(1, false);
   objects.local_locks_modes = true;

@@ -37,6 +37,7 @@ std::string DsvOptions::read(const devices::DeviceOptions& options) {
   quantise_on_write = s.flag("quantise_on_write", quantise_on_write);
   restore_keeps_address = s.flag("restore_keeps_address", restore_keeps_address);
   alias_230e_mode7 = s.flag("alias_230e_mode7", alias_230e_mode7);
+  pdo_padding = s.flag("pdo_padding", pdo_padding);
   strict_fault_reset = s.flag("strict_fault_reset", strict_fault_reset);
   fault_hold = s.flag("fault_hold", fault_hold);
   cable_break_ma = s.number("cable_break_ma", cable_break_ma);

@@ -39,6 +39,7 @@ struct DsvOptions {
   bool alias_230e_mode7 = false;      ///< A-21: in mode 7, 230Eh:01 is another name for 250Eh:01
   bool strict_fault_reset = false;    ///< A-36: TR_10 only from FAULT, TR_11 only from FAULT_HOLD
   bool fault_hold = false;            ///< A-36: the fault reaction ends in FAULT_HOLD (TR_9)
+  bool pdo_padding = false;           ///< A-50: TPDOs padded to 8 bytes ("not used" = 0)
   double cable_break_ma = 3.0;        ///< below this (4..20 mA input) the cable is broken
   double supply_min = 18;             ///< V: below → EMCY 0x3412
   double sensor_min = 0, sensor_max = 1;  ///< SI measurand at the bottom / top of the signal range

@@ -115,6 +115,17 @@ TEST_F(PdoTest, Type254IsEventDrivenLike255) {
   EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x34, 0x12, 0x56})});  // event timer
 }
 
+TEST_F(PdoTest, PaddedTpdosGoOutWithEightBytesAndAnswerEightByteRemoteRequests) {
+  h.node().policy().pdo.pad_tpdo_to_8 = true;
+  operational();
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x34, 0x12, 0x55, 0, 0, 0, 0, 0})});
+  h.send(Frame::remote(0x285, 8));
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0, 0, 0, 0, 0, 0, 0, 0})});
+  h.node().policy().pdo.rtr_dlc_mismatch = canopen::PdoPolicy::RtrDlcMismatch::Ignore;
+  h.send(Frame::remote(0x285, 4));  // the mapped length is no longer the PDO's length
+  EXPECT_TRUE(h.take().empty());
+}
+
 namespace {
 // Node 5 with 0x1019 and TPDO2 (0x285, 0x6001) carrying a SYNC start value.
 class SyncCounterTest : public ::testing::Test {

@@ -116,6 +116,14 @@ TEST_F(DsvTest, SettingStrictFaultReset) {
   EXPECT_EQ(status(), 0x0009);
 }
 
+TEST_F(DsvTest, SettingPdoPadding) {
+  // TV-40 with A-50's option: the 2-byte TPDO1 goes out as the manual's 8-byte drawing.
+  make(bus_mode({{"pdo_padding", "true"}}));
+  start();
+  h->send(0x201, {0x07, 0x00, 0x00, 0x20});
+  EXPECT_EQ(h->take(), Frames{Frame(0x181, {0x0F, 0x00, 0, 0, 0, 0, 0, 0})});
+}
+
 TEST_F(DsvTest, SettingsAreValidated) {
   for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{
            {"nosuch", "1"}, {"solenoids", "3"}, {"supply_voltage_nominal", "48"}, {"imin", "9000"},
