@@ -30,6 +30,7 @@ void LssSlave::power_on() {
   state_ = State::Waiting;
   selective_step_ = identify_step_ = fastscan_position_ = 0;
   switching_ = false;
+  held_answer_.reset();
   stored_since_configure_ = false;
   const auto& nv = node_.store().memory();
   if (const auto* id = nv.find(kNvIndex, 1); id && id->bytes.size() == 1) node_.set_pending_node_id(id->bytes[0]);
@@ -42,14 +43,16 @@ void LssSlave::power_on() {
   pending_node_id_ = node_.pending_node_id();
 }
 
-void LssSlave::reply(std::initializer_list<std::uint8_t> bytes) {
+sim::CanFrame LssSlave::answer(std::initializer_list<std::uint8_t> bytes) {
   sim::CanFrame f;
   f.id = kSlaveToMaster;
   f.dlc = 8;
   std::size_t i = 0;
   for (auto b : bytes) f.data[i++] = b;
-  node_.send(f);
+  return f;
 }
+
+void LssSlave::reply(std::initializer_list<std::uint8_t> bytes) { node_.send(answer(bytes)); }
 
 void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
   if (frame.rtr || switching_) return;
@@ -82,10 +85,13 @@ void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
       break;
     case 0x17:  // store configuration
       if (!config) break;
-      if (store_configuration()) {
-        reply({0x17, 0x00, 0x00});
-      } else {
+      if (!store_configuration()) {
         reply({0x17, policy_.store_error_code, policy_.store_error_specific});
+      } else if (policy_.store_answer_delay.count() > 0) {
+        held_answer_ = answer({0x17, 0x00, 0x00});
+        node_.go_silent_until(now + policy_.store_answer_delay);
+      } else {
+        reply({0x17, 0x00, 0x00});
       }
       break;
     case 0x5A: case 0x5B: case 0x5C: case 0x5D:
@@ -218,6 +224,10 @@ void LssSlave::fastscan(const std::uint8_t* d) {
 }
 
 void LssSlave::process(sim::Time now) {
+  if (held_answer_ && !node_.silent()) {
+    node_.send(*held_answer_);
+    held_answer_.reset();
+  }
   if (!switching_) return;
   if (now >= switch_at_) active_bit_rate_ = pending_bit_rate_;
   if (now >= resume_at_) switching_ = false;

@@ -36,6 +36,9 @@ struct LssPolicy {
   /// Error code / specific error answered when "store configuration" fails.
   std::uint8_t store_error_code = 0xFF;
   std::uint8_t store_error_specific = 0x02;
+  /// A successful "store configuration" is answered only after this long, the node silent
+  /// meanwhile (a device busy writing its EEPROM, like a 1010h save); 0 = at once.
+  sim::Duration store_answer_delay{0};
   /// Bit-timing table index meaning "automatic bit-rate detection" (e.g. 9 on devices that
   /// list "auto" in their table); none by default. A node whose active rate is this index
   /// stays passive after power-on until it has seen another node's frame (see Node).
@@ -87,6 +90,7 @@ class LssSlave {
   LssPolicy& policy() { return policy_; }
 
  private:
+  static sim::CanFrame answer(std::initializer_list<std::uint8_t> bytes);
   void reply(std::initializer_list<std::uint8_t> bytes);
   void switch_global(std::uint8_t mode);
   void switch_selective(std::uint8_t cs, std::uint32_t value);
@@ -108,6 +112,7 @@ class LssSlave {
   bool identify_match_ = true;
   std::uint32_t identify_low_ = 0;
   int fastscan_position_ = 0;
+  std::optional<sim::CanFrame> held_answer_;  // "store configuration" answer sent after the delay
   // Activate bit timing: silent for delay, switch, silent for delay again.
   bool switching_ = false;
   sim::Time switch_at_{};

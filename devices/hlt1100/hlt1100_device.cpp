@@ -20,6 +20,7 @@ canopen::LssPolicy lss_policy(const Settings& s) {
   p.fastscan = true;
   p.fastscan_only_unconfigured = !s.lss_fastscan_configured;
   p.transition4_requires_store = s.lss_store_before_waiting;
+  p.store_answer_delay = sim::milliseconds(s.lss_store_delay_ms);
   p.bit_rates.reset();
   for (int i : {0, 1, 2, 3, 4, 6, 7}) p.bit_rates.set(i);  // index 5 is "reserved" [M §4.7.4.2]
   return p;

@@ -44,6 +44,7 @@ std::string parse_settings(const std::map<std::string, std::string>& text, Setti
   r.get("lss_fastscan_configured", s.lss_fastscan_configured);
   r.get("lss_in_operational", s.lss_in_operational);
   r.get("lss_store_before_waiting", s.lss_store_before_waiting);
+  r.get_uint("lss_store_delay_ms", s.lss_store_delay_ms, 0, 3000);
   r.get("sync_dlc_strict", s.sync_dlc_strict);
   int reset = s.reset_node_factory ? 1 : 0;
   r.choose("reset_node_loads", reset, {"stored", "factory"});

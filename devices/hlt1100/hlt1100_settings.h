@@ -44,6 +44,7 @@ struct Settings {
   bool lss_fastscan_configured = false;    ///< fastscan also for configured nodes
   bool lss_in_operational = true;
   bool lss_store_before_waiting = true;    ///< CiA 305 transition 4 needs "store"
+  unsigned lss_store_delay_ms = 0;         ///< LSS "store configuration" answered after this, silent meanwhile (§6 #34)
   bool sync_dlc_strict = true;             ///< only SYNC with DLC 0 triggers TPDO2
   bool reset_node_factory = false;         ///< Reset Node loads factory values (off: stored values)
   bool preset_auto_save = false;           ///< a preset is saved at once (off: only with 1010h)

@@ -154,6 +154,24 @@ TEST_F(LssTest, NodeIdFFCanBeRefusedAndStoreFailureHasAConfigurableAnswer) {
   EXPECT_EQ(lss({0x17}), Frames{reply({0x17, 0x00, 0x00})});
 }
 
+TEST_F(LssTest, StoreAnswerCanComeAfterASilentDelay) {
+  h.node().lss()->policy().store_answer_delay = sim::milliseconds(300);
+  ASSERT_EQ(h.write(0x1017, 0, 100, 2), 0u);  // heartbeat: shows the silence
+  h.take();
+  lss({0x04, 0x01});
+  ASSERT_EQ(lss({0x11, 12}), Frames{reply({0x11, 0x00, 0x00})});
+  EXPECT_TRUE(lss({0x17}).empty());
+  h.run_ms(299);
+  EXPECT_TRUE(h.take().empty());  // no answer, no heartbeat
+  h.run_ms(2);
+  const Frames after = h.take();
+  ASSERT_FALSE(after.empty());
+  EXPECT_EQ(after.front(), reply({0x17, 0x00, 0x00}));
+  // A failed store is answered at once.
+  h.node().store().set_failing(true);
+  EXPECT_EQ(lss({0x17}), Frames{reply({0x17, 0xFF, 0x02})});
+}
+
 TEST(LssServices, ConfigurationServicesWithoutTheProtocol) {
   canopen::NodePolicy policy;
   policy.store.path = "/tmp/vplant-lss-services-" + std::to_string(::getpid());

@@ -29,6 +29,24 @@ TEST_F(LenientSync, SyncWithACounterByteAlsoTriggers) {
   EXPECT_EQ(h().take(), Frames{Frame(0x285, {0xE8, 0x03, 0x00, 0x00})});
 }
 
+class SlowLssStore : public Hlt1100Test {
+ protected:
+  SlowLssStore() : Hlt1100Test({{"lss_store_delay_ms", "500"}}) {}
+};
+
+TEST_F(SlowLssStore, StoreConfigurationIsAnsweredAfterTheDelay) {
+  h().take();
+  h().send(Frame(0x7E5, eight({0x04, 0x01})));
+  ASSERT_EQ(h().take(), Frames{});
+  h().send(Frame(0x7E5, eight({0x17})));
+  h().run_ms(499);
+  EXPECT_TRUE(h().take().empty());  // silent: no answer, no PDO
+  h().run_ms(2);
+  const Frames after = h().take();
+  ASSERT_FALSE(after.empty());
+  EXPECT_EQ(after.front(), Frame(0x7E4, eight({0x17, 0x00, 0x00})));
+}
+
 class FastscanForAll : public Hlt1100Test {
  protected:
   FastscanForAll() : Hlt1100Test({{"lss_fastscan_configured", "on"}}) {}
