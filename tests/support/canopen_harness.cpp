@@ -62,6 +62,16 @@ std::vector<sim::Time> CanopenHarness::take_times() {
   return t;
 }
 
+CanopenHarness::FirstFrames CanopenHarness::run_until_frames(sim::Time since, sim::Duration limit) {
+  FirstFrames out;
+  while (out.frames.empty() && now() - since < limit) {
+    out.at = now() - since;
+    run_ms(1);
+    out.frames = take();
+  }
+  return out;
+}
+
 std::optional<Frame> CanopenHarness::sdo(std::initializer_list<std::uint8_t> request) {
   take();
   std::vector<std::uint8_t> req(request);

@@ -76,6 +76,13 @@ class CanopenHarness {
   /// Frames the master received since the last take(), then clears them.
   Frames take();
   std::vector<sim::Time> take_times();
+  /// Runs 1 ms at a time from `since` until the master receives something or `limit` has passed
+  /// since `since`: the frames, and how long after `since` the tick that sent them started.
+  struct FirstFrames {
+    Frames frames;
+    sim::Duration at{};
+  };
+  FirstFrames run_until_frames(sim::Time since, sim::Duration limit);
 
   // --- SDO client helpers (node-ID based COB-IDs) ----------------------------------------------
   std::uint8_t id() const { return node_->node_id(); }

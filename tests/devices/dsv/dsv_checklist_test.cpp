@@ -84,13 +84,7 @@ TEST_F(DsvTest, C11_LifeGuardingTimeout) {
   h->take();
   const auto t0 = h->now();
   // One tick (1 ms) at a time up to 400 ms of silence: the first frame and the tick that sent it.
-  Frames frames;
-  sim::Duration at{};
-  while (frames.empty() && h->now() - t0 < sim::milliseconds(400)) {
-    at = h->now() - t0;
-    h->run_ms(1);
-    frames = h->take();
-  }
+  const auto [frames, at] = h->run_until_frames(t0, sim::milliseconds(400));
   EXPECT_EQ(frames, Frames{Frame(0x081, {0x00, 0x81, 0x11, 0x00, 0x00, 0x00, 0x00, 0x00})});
   // "About 300 ms after the last RTR": life time 100 ms x 3, not earlier, within a control cycle.
   EXPECT_GE(at, sim::milliseconds(300));

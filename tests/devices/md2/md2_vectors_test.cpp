@@ -341,13 +341,7 @@ TEST_F(Md2Test, B13_LifeGuardingTimeoutInDisabled) {
   h->run_ms(299);
   EXPECT_TRUE(h->take().empty());  // not before the life time, 100 ms x 3
   // One tick (1 ms) at a time: the EMCY and the tick that sent it.
-  Frames frames;
-  sim::Duration at{};
-  while (frames.empty() && h->now() - t0 < sim::milliseconds(400)) {
-    at = h->now() - t0;
-    h->run_ms(1);
-    frames = h->take();
-  }
+  const auto [frames, at] = h->run_until_frames(t0, sim::milliseconds(400));
   EXPECT_EQ(frames, Frames{Frame(0x081, {0x00, 0x81, 0x11, 0x00, 0x00, 0x00, 0x00, 0x00})});
   EXPECT_GE(at, sim::milliseconds(300));
   EXPECT_LE(at, sim::milliseconds(301));  // ≈ 300 ms, within a control cycle

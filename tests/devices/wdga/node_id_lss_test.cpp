@@ -60,32 +60,27 @@ TEST_F(NodeId, StoredCobIdsNoLongerFollowTheNodeId) {
   EXPECT_EQ(h().take(), Frames{Frame(0x706, {0x00})});
   EXPECT_EQ(u(0x1800, 1), 0x40000185u);  // frozen
   EXPECT_EQ(u(0x1014), 0x85u);
-  start();
-  h().take();
-  turn_to(0.25);
-  h().run_ms(3);
-  const auto frames = h().take();
-  ASSERT_FALSE(frames.empty());
-  for (const auto& f : frames) EXPECT_EQ(f.id, 0x185u);
-  // The EMCY, too, still goes out on the stored 085h (an overrun: an event, no state change).
-  device().inject_fault("can_overrun", true);
-  EXPECT_EQ(h().take(), Frames{Frame(0x085, eight({0x10, 0x81, 0x10, 0x01}))});
+  // On the bus: started and turned, TPDO1 on `tpdo`; an overrun (an event, no state change)
+  // sends its EMCY on `emcy`.
+  auto expect_on_the_bus = [&](double turn, std::uint32_t tpdo, std::uint32_t emcy) {
+    start();
+    h().take();
+    turn_to(turn);
+    h().run_ms(3);
+    const auto frames = h().take();
+    ASSERT_FALSE(frames.empty());
+    for (const auto& f : frames) EXPECT_EQ(f.id, tpdo);
+    device().inject_fault("can_overrun", true);
+    EXPECT_EQ(h().take(), Frames{Frame(emcy, eight({0x10, 0x81, 0x10, 0x01}))});
+  };
+  expect_on_the_bus(0.25, 0x185, 0x085);  // still the stored COB-IDs
   h().nmt(0x80, 6);
   ASSERT_EQ(h().write(0x1011, 1, kLoad, 4), 0u);
   reset_node();
   EXPECT_EQ(h().take(), Frames{Frame(0x706, {0x00})});
   EXPECT_EQ(u(0x1800, 1), 0x40000186u);  // tracking again
   EXPECT_EQ(u(0x1014), 0x86u);
-  // ... and on the bus: TPDO1 on 186h, EMCY on 086h.
-  start();
-  h().take();
-  turn_to(0.5);
-  h().run_ms(3);
-  const auto after = h().take();
-  ASSERT_FALSE(after.empty());
-  for (const auto& f : after) EXPECT_EQ(f.id, 0x186u);
-  device().inject_fault("can_overrun", true);
-  EXPECT_EQ(h().take(), Frames{Frame(0x086, eight({0x10, 0x81, 0x10, 0x01}))});
+  expect_on_the_bus(0.5, 0x186, 0x086);
 }
 
 TEST_F(NodeId, StoreSignatureAndRestoreKeepsNodeIdBitRateAndCustomerData) {
