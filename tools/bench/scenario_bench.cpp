@@ -10,8 +10,8 @@
 #include <sstream>
 #include <string>
 
-#include "tools/scenario/runner.h"
-#include "tools/scenario/scenario_loader.h"
+#include "engine/runner.h"
+#include "engine/scenario_loader.h"
 
 int main(int argc, char** argv) {
   std::string path = VPLANT_SOURCE_DIR "/scenarios/reference-plant.yaml";

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "tools/scenario/runner.h"
-#include "tools/scenario/yaml_fields.h"
+#include "engine/runner.h"
+#include "engine/yaml_fields.h"
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exit_codes.h"
 #include "tools/vplant/key_value.h"

@@ -1,0 +1,56 @@
+// Fault injection: applies a fault (wire, bus-off, device, power, plant parameter) now, schedules
+// its end when it has a duration, and fires the scenario's `faults:` at their time or on their
+// condition. Runs first in every tick, so everything else in the tick sees the fault.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/scheduler.h"
+#include "engine/outcome.h"
+#include "engine/scenario.h"
+#include "engine/wire_fault_filter.h"
+#include "engine/world.h"
+
+namespace scenario {
+
+class FaultInjector final : public sim::Steppable {
+ public:
+  using Log = std::function<void(sim::Time, const std::string&)>;
+
+  /// Checks every fault of the scenario against the world (nodes, fault names, plant parameters,
+  /// signals of conditions); throws LoadError. Installs a WireFaultFilter on every bus.
+  FaultInjector(World& world, Verdicts& verdicts, Log log);
+
+  /// Validates one fault (also used for the script's fault steps); throws LoadError.
+  void check(const FaultSpec& f);
+  /// Applies `f` now (and schedules its end if it has a duration).
+  void apply(const FaultSpec& f, sim::Time now);
+
+  void step(sim::Time now, sim::Duration dt) override;
+  std::size_t applied() const { return applied_; }
+
+ private:
+  struct Scheduled {
+    const FaultSpec* spec;
+    Signal when;  ///< valid when spec->when
+    bool fired = false;
+  };
+  struct Undo {
+    sim::Time due;
+    std::function<void(sim::Time)> action;
+  };
+  NodeInstance& node(const std::string& name);
+
+  World& world_;
+  Verdicts& verdicts_;
+  Log log_;
+  std::vector<std::unique_ptr<WireFaultFilter>> filters_;
+  std::vector<Scheduled> scheduled_;
+  std::vector<Undo> undo_;
+  std::size_t applied_ = 0;
+};
+
+}  // namespace scenario

@@ -1,0 +1,266 @@
+#include "engine/runner.h"
+
+#include <chrono>
+#include <ctime>
+#include <filesystem>
+
+#include "sim/scheduler.h"
+#include "sim/trace_writer.h"
+#include "engine/fault_injector.h"
+#include "engine/junit_writer.h"
+#include "engine/plot.h"
+#include "engine/recorder.h"
+#include "engine/scenario_loader.h"
+#include "engine/scripted_master.h"
+#include "engine/world.h"
+
+namespace scenario {
+
+namespace {
+
+std::atomic<Runner*> g_active{nullptr};
+
+/// Steps every node of the world in scenario order (one scheduler component for all of them).
+class NodeGroup final : public sim::Steppable {
+ public:
+  explicit NodeGroup(World& world) {
+    for (auto& n : world.nodes()) nodes_.push_back(&n.device->node());
+  }
+  void step(sim::Time now, sim::Duration dt) override {
+    for (auto* n : nodes_) n->step(now, dt);
+  }
+
+ private:
+  std::vector<canopen::Node*> nodes_;
+};
+
+std::string prepare_output(const std::string& path) {
+  const auto parent = std::filesystem::path(path).parent_path();
+  if (parent.empty()) return {};
+  std::error_code ec;
+  std::filesystem::create_directories(parent, ec);
+  return ec ? "cannot create '" + parent.string() + "': " + ec.message() : std::string();
+}
+
+double wall_now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+struct Runner::Impl {
+  const Scenario& scenario;
+  RunOptions options;
+  Verdicts verdicts;
+  RunSummary summary;
+  std::unique_ptr<World> world;
+  std::unique_ptr<FaultInjector> faults;
+  std::unique_ptr<ScriptedMaster> master;
+  std::unique_ptr<NodeGroup> nodes;
+  std::unique_ptr<Recorder> recorder;
+  std::unique_ptr<sim::TraceWriter> trace;
+  std::unique_ptr<sim::Scheduler> scheduler;
+  std::optional<sim::Duration> duration;
+  std::string csv_path, trace_path, junit_path;
+  std::vector<std::pair<const PlotSpec*, std::vector<int>>> plots;  // plot → recorder columns
+
+  Impl(const Scenario& s, const RunOptions& o) : scenario(s), options(o) {}
+
+  void log(sim::Time t, const std::string& text) const {
+    if (!options.quiet) std::fprintf(options.out, "[%10.3f s] %s\n", sim::seconds(t), text.c_str());
+  }
+};
+
+Runner::Runner(const Scenario& scenario, const Environment& env, const RunOptions& options)
+    : impl_(std::make_unique<Impl>(scenario, options)) {
+  auto& m = *impl_;
+  BuildOptions build;
+  build.can = options.can;
+  m.world = std::make_unique<World>(scenario, env, build, options.seed.value_or(scenario.clock.seed));
+  const auto logger = [&m](sim::Time t, const std::string& text) { m.log(t, text); };
+  m.faults = std::make_unique<FaultInjector>(*m.world, m.verdicts, logger);
+  m.master = std::make_unique<ScriptedMaster>(*m.world, *m.faults, m.verdicts, logger);
+  m.nodes = std::make_unique<NodeGroup>(*m.world);
+
+  m.duration = options.duration ? options.duration : scenario.clock.duration;
+  bool realtime = options.realtime || scenario.clock.mode == ClockSpec::Mode::RealTime ||
+                  (scenario.clock.mode == ClockSpec::Mode::Auto && m.world->any_socketcan());
+  if (!m.duration && !m.master->has_script() && !realtime)
+    throw LoadError(scenario.clock.mark.line > 0 ? scenario.clock.mark : SourceMark{scenario.file, 0, 0},
+                    "nothing ends this run: give the clock a duration (or --duration), a script, or run in real time");
+
+  // Outputs: the command line overrides the file.
+  m.trace_path = options.trace.empty() ? scenario.outputs.trace : options.trace;
+  m.csv_path = !options.csv.empty() ? options.csv : (scenario.outputs.csv ? scenario.outputs.csv->file : "");
+  m.junit_path = options.junit.empty() ? scenario.outputs.junit : options.junit;
+  m.recorder = std::make_unique<Recorder>(scenario.outputs.sample_period);
+  if (!m.csv_path.empty()) {
+    const auto signals = scenario.outputs.csv && !scenario.outputs.csv->signals.empty() ? scenario.outputs.csv->signals
+                                                                                        : m.world->wired_signals();
+    for (const auto& s : signals) m.recorder->add(m.world->resolve(s), false, true);
+  }
+  for (const auto& p : scenario.outputs.plots) {
+    std::vector<int> columns;
+    for (const auto& s : p.signals) columns.push_back(m.recorder->add(m.world->resolve(s), true, false));
+    m.plots.emplace_back(&p, std::move(columns));
+  }
+
+  m.scheduler = std::make_unique<sim::Scheduler>(scenario.clock.tick, realtime ? sim::ClockMode::RealTime : sim::ClockMode::Virtual);
+  for (auto& bus : m.world->buses()) m.scheduler->add_bus(bus.get());
+  m.scheduler->add(m.faults.get());
+  m.scheduler->add(m.master.get());
+  m.scheduler->add(&m.world->plant_to_devices());
+  m.scheduler->add(m.nodes.get());
+  m.scheduler->add(&m.world->devices_to_plant());
+  m.scheduler->add(m.recorder.get());
+  if (m.world->plant()) m.scheduler->add(m.world->plant());
+
+  if (!m.trace_path.empty()) {
+    std::string error = prepare_output(m.trace_path);
+    if (error.empty()) m.trace = std::make_unique<sim::TraceWriter>(m.trace_path, error);
+    if (!error.empty() || !m.trace->is_open()) throw LoadError(SourceMark{m.trace_path, 0, 0}, error);
+    if (realtime) m.trace->set_epoch_offset(static_cast<std::int64_t>(std::time(nullptr)));
+    for (auto& bus : m.world->buses()) bus->add_tap(m.trace.get());
+  }
+  if (!m.csv_path.empty()) {
+    std::string error = prepare_output(m.csv_path);
+    if (error.empty()) error = m.recorder->open_csv(m.csv_path);
+    if (!error.empty()) throw LoadError(SourceMark{m.csv_path, 0, 0}, error);
+  }
+}
+
+Runner::~Runner() {
+  Runner* self = this;
+  g_active.compare_exchange_strong(self, nullptr);
+}
+
+void Runner::request_stop() { impl_->scheduler->request_stop(); }
+const Verdicts& Runner::verdicts() const { return impl_->verdicts; }
+const RunSummary& Runner::summary() const { return impl_->summary; }
+Runner* active_runner() { return g_active.load(); }
+
+int Runner::run() {
+  auto& m = *impl_;
+  g_active.store(this);
+  auto& sched = *m.scheduler;
+  const bool realtime = sched.mode() == sim::ClockMode::RealTime;
+  for (auto& n : m.world->nodes()) n.device->power_on(sched.now());
+
+  const double wall_start = wall_now();
+  double next_progress = wall_start + 0.5;
+  bool progress_shown = false;
+  const std::uint64_t limit_ticks =
+      m.duration ? static_cast<std::uint64_t>((m.duration->count() + sched.tick().count() - 1) / sched.tick().count()) : 0;
+  while (!sched.stop_requested()) {
+    if (m.duration ? sched.stats().ticks >= limit_ticks : (m.master->has_script() && m.master->finished())) break;
+    sched.run_ticks(1);
+    if (m.options.progress && (sched.stats().ticks & 255) == 0) {
+      const double w = wall_now();
+      if (w >= next_progress) {
+        next_progress = w + 0.25;
+        progress_shown = true;
+        const double sim_s = sim::seconds(sched.now());
+        if (m.duration) {
+          std::fprintf(m.options.out, "\r  %.1f / %.1f s simulated (%.0f× real time)   ", sim_s, sim::seconds(*m.duration),
+                       sim_s / (w - wall_start));
+        } else {
+          std::fprintf(m.options.out, "\r  %.1f s simulated (%.0f× real time)   ", sim_s, sim_s / (w - wall_start));
+        }
+        std::fflush(m.options.out);
+      }
+    }
+  }
+  if (progress_shown) std::fprintf(m.options.out, "\r%60s\r", "");
+  const double wall = wall_now() - wall_start;
+  m.summary.interrupted = sched.stop_requested();
+  m.master->finish(sched.now());
+  m.recorder->close();
+  if (m.trace) m.trace->flush();
+  g_active.store(nullptr);
+
+  int rc = m.verdicts.failures() ? 1 : 0;
+  for (const auto& [spec, columns] : m.plots) {
+    PlotInput in;
+    in.title = spec->title.empty() ? m.scenario.name : spec->title;
+    in.y_label = spec->y_label;
+    in.width = spec->width;
+    in.height = spec->height;
+    in.times = &m.recorder->times();
+    for (std::size_t i = 0; i < columns.size(); ++i)
+      in.series.push_back({spec->labels[i].empty() ? spec->signals[i].text : spec->labels[i], &m.recorder->series(columns[i])});
+    std::string error = prepare_output(spec->file);
+    if (error.empty()) error = write_plot(in, spec->file);
+    if (!error.empty()) {
+      std::fprintf(m.options.out, "vplant run: %s\n", error.c_str());
+      rc = 2;
+    }
+  }
+
+  auto& s = m.summary;
+  s.simulated_s = sim::seconds(sched.now());
+  s.wall_s = wall;
+  s.ticks = sched.stats().ticks;
+  s.realtime = realtime;
+  s.overruns = sched.stats().overruns;
+  s.max_lateness_us = sched.stats().max_lateness.count();
+  for (std::size_t i = 0; i < m.world->buses().size(); ++i) {
+    const auto& bus = *m.world->buses()[i];
+    s.buses.push_back({bus.name(), bus.transport() ? std::string(bus.transport()->name()) : "virtual", bus.stats().frames});
+  }
+  s.assertions = m.verdicts.outcomes().size();
+  s.failures = m.verdicts.failures();
+  s.faults = m.faults->applied();
+
+  if (!m.junit_path.empty()) {
+    std::string error = prepare_output(m.junit_path);
+    if (error.empty()) error = write_junit(m.junit_path, m.scenario.name, m.verdicts, wall, s.simulated_s);
+    if (!error.empty()) {
+      std::fprintf(m.options.out, "vplant run: %s\n", error.c_str());
+      rc = 2;
+    }
+  }
+
+  FILE* out = m.options.out;
+  for (const auto& o : m.verdicts.outcomes()) {
+    if (o.passed) continue;
+    std::fprintf(out, "%s: FAILED at %.3f s: %s: expected %s, actual %s\n", o.mark.to_string().c_str(),
+                 sim::seconds(o.time), o.name.c_str(), o.expected.c_str(), o.actual.c_str());
+  }
+  if (!m.options.quiet) {
+    std::fprintf(out, "vplant run: %s: %.3f s simulated in %.3f s wall (%.0f× real time)%s\n", m.scenario.name.c_str(),
+                 s.simulated_s, s.wall_s, s.wall_s > 0 ? s.simulated_s / s.wall_s : 0.0,
+                 s.interrupted ? ", interrupted" : "");
+    for (const auto& b : s.buses)
+      std::fprintf(out, "  bus %s (%s): %llu frames\n", b.name.c_str(), b.wire.c_str(), static_cast<unsigned long long>(b.frames));
+    std::fprintf(out, "  nodes: %zu, faults injected: %zu, ticks: %llu", m.world->nodes().size(), s.faults,
+                 static_cast<unsigned long long>(s.ticks));
+    if (realtime)
+      std::fprintf(out, ", overruns: %llu, worst tick lateness: %lld us", static_cast<unsigned long long>(s.overruns),
+                   static_cast<long long>(s.max_lateness_us));
+    std::fprintf(out, "\n  assertions: %zu passed, %zu failed\n", s.assertions - s.failures, s.failures);
+    if (m.trace) std::fprintf(out, "  trace: %s\n", m.trace_path.c_str());
+    if (!m.csv_path.empty()) std::fprintf(out, "  csv: %s (%zu rows)\n", m.csv_path.c_str(), m.recorder->rows());
+    for (const auto& [spec, columns] : m.plots) std::fprintf(out, "  plot: %s\n", spec->file.c_str());
+    if (!m.junit_path.empty()) std::fprintf(out, "  junit: %s\n", m.junit_path.c_str());
+  }
+  return rc;
+}
+
+int run_scenario_file(const std::string& path, const Environment& env, const RunOptions& options) {
+  try {
+    Scenario s = load_scenario_file(path);
+    if (options.no_script) {
+      // The file's script and duration belong to its scripted master; without it, the run lasts
+      // until --duration or, in real time, until SIGINT/SIGTERM.
+      s.script.clear();
+      s.clock.duration.reset();
+    }
+    Runner runner(s, env, options);
+    return runner.run();
+  } catch (const LoadError& e) {
+    std::fprintf(options.out, "%s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace scenario

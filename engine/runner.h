@@ -1,0 +1,87 @@
+// Runs a scenario: builds the world, the fault injector, the scripted master and the recorder,
+// puts them on one scheduler in this order per tick
+//   1 fault injector    faults due at `now` act before anything else sees the tick
+//   2 scripted master   decides assertions on the state at `now`, sends SYNC/NMT/SDO/PDOs
+//   3 plant → devices   sensor inputs = plant outputs at `now`
+//   4 nodes             (scenario order) consume the tick's frames, sample inputs, drive outputs
+//   5 devices → plant   actuator commands for [now, now + dt]
+//   6 recorder          CSV/plot row: plant state at `now`, device outputs for the tick
+//   7 plant             integrates [now, now + dt]
+// (the buses deliver after every component, so a request and its answer share a tick), runs it
+// until its duration, the end of the script, or SIGINT, and writes the outputs and the summary.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/environment.h"
+#include "engine/outcome.h"
+#include "engine/scenario.h"
+
+namespace scenario {
+
+struct RunOptions {
+  std::map<std::string, std::string> can;  ///< --can BUS=IFACE
+  bool realtime = false;                   ///< --realtime
+  bool no_script = false;                  ///< --no-script: drop the script and clock.duration (an external master drives)
+  std::optional<sim::Duration> duration;   ///< --duration
+  std::optional<std::uint64_t> seed;       ///< --seed
+  std::string trace, csv, junit;           ///< override the scenario's outputs
+  bool progress = false;                   ///< progress line on stderr (a terminal)
+  bool quiet = false;                      ///< no summary (tests, benchmarks)
+  std::FILE* out = stderr;                 ///< summary, failures, log lines
+};
+
+struct RunSummary {
+  double simulated_s = 0;
+  double wall_s = 0;
+  std::uint64_t ticks = 0;
+  bool realtime = false;
+  std::uint64_t overruns = 0;
+  std::int64_t max_lateness_us = 0;
+  struct BusFrames {
+    std::string name, wire;
+    std::uint64_t frames = 0;
+  };
+  std::vector<BusFrames> buses;
+  std::size_t assertions = 0;
+  std::size_t failures = 0;
+  std::size_t faults = 0;
+  bool interrupted = false;
+};
+
+class Runner {
+ public:
+  /// Builds everything; throws LoadError for a scenario that cannot run.
+  Runner(const Scenario& scenario, const Environment& env, const RunOptions& options);
+  ~Runner();
+  Runner(const Runner&) = delete;
+  Runner& operator=(const Runner&) = delete;
+
+  /// Runs to the end and writes the outputs. Returns the exit code: 0 all assertions held,
+  /// 1 one failed, 2 an output could not be written.
+  int run();
+  /// Async-signal-safe: ends the run at the next tick boundary.
+  void request_stop();
+
+  const Verdicts& verdicts() const;
+  const RunSummary& summary() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Loads and runs a scenario file: the whole of `vplant run` after option parsing. Prints errors
+/// as `file:line:col: reason`; returns 0, 1 or 2.
+int run_scenario_file(const std::string& path, const Environment& env, const RunOptions& options);
+
+/// The runner currently executing (for a SIGINT handler), or nullptr.
+Runner* active_runner();
+
+}  // namespace scenario

@@ -1,0 +1,30 @@
+// Scenario values ↔ CANopen bytes: encodes a literal for an object of a given CiA type (with
+// range checks), decodes bytes for messages, and maps the scenario's short type names
+// (u8..u64, i8..i64, f32, f64, bool, string, bytes) to CiA data types.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "devices/canopen/data_type.h"
+#include "engine/yaml_fields.h"
+
+namespace scenario {
+
+/// nullopt for "bytes" (raw) and unknown names.
+std::optional<canopen::DataType> type_from_name(const std::string& name);
+
+/// Encodes `value` as `type` (little-endian); returns an error message ("value 300 out of range
+/// for UNSIGNED8"), empty on success.
+std::string encode_literal(canopen::DataType type, const Literal& value, std::vector<std::uint8_t>& out);
+
+/// Numeric value of bytes of `type` (strings: NaN).
+double decode_number(canopen::DataType type, std::span<const std::uint8_t> bytes);
+/// Bytes as text for messages: numbers as numbers (and hex for integers), strings quoted.
+std::string describe_bytes(canopen::DataType type, std::span<const std::uint8_t> bytes);
+std::string hex_bytes(std::span<const std::uint8_t> bytes);
+
+}  // namespace scenario

@@ -1,0 +1,96 @@
+// Outputs of a run: candump trace, CSV, PNG plot and JUnit XML.
+#include <gtest/gtest.h>
+#include <png.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "tests/support/temp_path.h"
+#include "tests/engine/run_helper.h"
+#include "engine/plot.h"
+
+namespace {
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+const std::string kRun = R"(
+nodes:
+  - {name: ax, device: axis, node_id: 5}
+plant:
+  axis: {gain: 1.0}
+wires:
+  - {from: ax.velocity, to: axis.velocity_command}
+  - {from: axis.position, to: ax.position}
+clock: {duration: 1s}
+outputs:
+  sample_period: 100ms
+  csv: {file: OUT/run.csv, signals: [axis.position, "frame(0x185)[0:4] as i32"]}
+  plots:
+    - {file: OUT/plot.png, title: Axis, y_label: "position [mm]", width: 640, height: 400,
+       signals: [{signal: axis.position * 1000, label: plant}, "frame(0x185)[0:4] as i32 * 1e-3"]}
+  junit: OUT/run.xml
+  trace: OUT/run.log
+script:
+  - wait: 10ms
+  - nmt: start
+  - sync: 100ms
+  - rpdo: {node: ax, values: {"0x6001": 100000}}
+  - name: never reached
+    expect: {signal: axis.position, above: 5, within: 500ms}
+)";
+
+}  // namespace
+
+TEST(Outputs, TraceCsvPlotAndJunit) {
+  const std::string dir = vtest::unique_temp_path("vplant-outputs");
+  std::string text = kRun;
+  for (auto p = text.find("OUT"); p != std::string::npos; p = text.find("OUT")) text.replace(p, 3, dir);
+  const auto r = vtest::run_text(text);
+  EXPECT_EQ(r.rc, 1);
+
+  const auto csv = read_file(dir + "/run.csv");
+  std::istringstream lines(csv);
+  std::string header, row0, row5;
+  std::getline(lines, header);
+  EXPECT_EQ(header, "time_s,axis.position,frame(0x185)[0:4] as i32");
+  std::getline(lines, row0);
+  EXPECT_EQ(row0, "0.000000,0,nan");
+  for (int i = 0; i < 5; ++i) std::getline(lines, row5);
+  EXPECT_EQ(row5.substr(0, 9), "0.500000,");
+  int rows = 6;
+  for (std::string l; std::getline(lines, l);) ++rows;
+  EXPECT_EQ(rows, 10);  // samples at 0.0 .. 0.9 s
+
+  const auto trace = read_file(dir + "/run.log");
+  EXPECT_EQ(trace.substr(0, 32), "(0000000000.000000) main 705#00\n");
+  EXPECT_NE(trace.find("(0000000000.010000) main 000#0100\n"), std::string::npos);
+
+  std::FILE* f = std::fopen((dir + "/plot.png").c_str(), "rb");
+  ASSERT_NE(f, nullptr);
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  ASSERT_TRUE(png_image_begin_read_from_stdio(&image, f));
+  EXPECT_EQ(image.width, 640u);
+  EXPECT_EQ(image.height, 400u);
+  png_image_free(&image);
+  std::fclose(f);
+
+  const auto xml = read_file(dir + "/run.xml");
+  EXPECT_NE(xml.find("<testsuite name=\"test\" tests=\"1\" failures=\"1\""), std::string::npos) << xml;
+  EXPECT_NE(xml.find("name=\"never reached\""), std::string::npos);
+  EXPECT_NE(xml.find("expected axis.position &gt; 5 within 0.5 s"), std::string::npos) << xml;
+}
+
+TEST(Plot, NiceTicksUseOneTwoFiveSteps) {
+  double step;
+  const auto t = scenario::nice_ticks(0.0, 1.0, 5, step);
+  EXPECT_DOUBLE_EQ(step, 0.2);
+  ASSERT_EQ(t.size(), 6u);
+  scenario::nice_ticks(-3e5, 2.2e7, 6, step);
+  EXPECT_DOUBLE_EQ(step, 5e6);
+}
