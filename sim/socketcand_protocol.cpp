@@ -24,7 +24,12 @@ int hex_value(char c) {
 
 std::string quoted(std::string_view token) {
   std::string s = "'";
-  for (char c : token.substr(0, 24)) s += (c >= 0x20 && c < 0x7F) ? c : '?';
+  for (char c : token.substr(0, 24)) {
+    if (c >= 0x20 && c < 0x7F)
+      s += c;
+    else
+      s += fmt::format("\\x{:02X}", static_cast<unsigned char>(c));
+  }
   if (token.size() > 24) s += "...";
   return s + "'";
 }
