@@ -103,6 +103,7 @@ SocketcandClient::~SocketcandClient() {
 
 void SocketcandClient::run() {
   std::string last_error;
+  bool ever_connected = false;
   while (!stop_requested()) {
     std::string error;
     socketcand::Splitter in;
@@ -110,6 +111,7 @@ void SocketcandClient::run() {
     if (fd >= 0) {
       log(LogLevel::Info, "{}: connected", where_);
       last_error.clear();
+      ever_connected = true;
       connected_.store(true, std::memory_order_release);
       stream(fd, in);
       connected_.store(false, std::memory_order_release);
@@ -121,7 +123,9 @@ void SocketcandClient::run() {
       log(LogLevel::Warn, "{}: {}; retrying every {} ms", where_, error, kReconnectMs);
       last_error = error;
     }
-    // Wait before the next attempt, dropping what the bus sends meanwhile; wake early on stop.
+    // Wait before the next attempt; wake early on stop. Until the first connection the bus's
+    // frames (its nodes' boot-ups) wait in the bounded queue; after a loss they are stale and
+    // dropped.
     const std::int64_t until = monotonic_ms() + kReconnectMs;
     while (!stop_requested()) {
       const std::int64_t left = until - monotonic_ms();
@@ -129,7 +133,7 @@ void SocketcandClient::run() {
       pollfd p{io_wake_fd(), POLLIN, 0};
       ::poll(&p, 1, static_cast<int>(left));
       clear_io_wake();
-      discard_outgoing();
+      if (ever_connected) discard_outgoing();
     }
   }
 }
@@ -201,24 +205,24 @@ void SocketcandClient::stream(int fd, socketcand::Splitter& in) {
   drain();
   char buf[4096];
   while (!stop_requested() && reason.empty()) {
+    // What the bus queued (also what waited for this connection); a frame queued after this
+    // leaves io_wake_fd readable.
+    CanFrame f;
+    char text[socketcand::kFormatMax];
+    while (pop_for_wire(f)) {
+      const std::size_t n = socketcand::format_send(f, text);
+      if (out.size() + n > kMaxPendingOutput) {
+        wire_dropped_.fetch_add(1, std::memory_order_relaxed);
+        continue;
+      }
+      out.append(text, n);
+    }
     pollfd fds[2] = {{io_wake_fd(), POLLIN, 0}, {fd, static_cast<short>(POLLIN | (out.empty() ? 0 : POLLOUT)), 0}};
     if (::poll(fds, 2, -1) < 0 && errno != EINTR) {
       reason = std::strerror(errno);
       break;
     }
-    if (fds[0].revents & POLLIN) {
-      clear_io_wake();
-      CanFrame f;
-      char text[socketcand::kFormatMax];
-      while (pop_for_wire(f)) {
-        const std::size_t n = socketcand::format_send(f, text);
-        if (out.size() + n > kMaxPendingOutput) {
-          wire_dropped_.fetch_add(1, std::memory_order_relaxed);
-          continue;
-        }
-        out.append(text, n);
-      }
-    }
+    if (fds[0].revents & POLLIN) clear_io_wake();
     if (fds[1].revents & (POLLIN | POLLHUP | POLLERR)) {
       const ssize_t n = ::recv(fd, buf, sizeof buf, MSG_DONTWAIT);
       if (n == 0) reason = "the server closed the connection";

@@ -24,7 +24,9 @@ class SocketcandClient final : public QueuedTransport {
   static constexpr std::size_t kMaxPendingOutput = 64 * 1024;
 
   /// Resolves `server` now (an unknown host is an error here) and connects in the background,
-  /// retrying every kReconnectMs while the server is unreachable.
+  /// retrying every kReconnectMs while the server is unreachable. Frames sent before the first
+  /// connection wait for it (up to the queue's capacity); frames sent while a lost connection
+  /// is being re-established are dropped and counted.
   static std::unique_ptr<SocketcandClient> open(const TcpEndpoint& server, const std::string& channel,
                                                 std::string& error);
   ~SocketcandClient() override;

@@ -376,6 +376,23 @@ TEST(SocketcandClient, ReconnectsWhenTheServerComesBack) {
   EXPECT_EQ(f, kHeartbeat);
 }
 
+TEST(SocketcandClient, FramesSentBeforeTheFirstConnectionWaitForIt) {
+  // A node's boot-up is sent at power-on, before the connection is up: it is not lost.
+  std::uint16_t port = serve()->port();  // a port that was free a moment ago
+  std::string error;
+  auto client = sim::SocketcandClient::open(sim::TcpEndpoint{"127.0.0.1", port}, "main", error);
+  ASSERT_TRUE(client) << error;
+  client->send(kHeartbeat);
+  client->service(sim::Time{});
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  auto server = sim::SocketcandServer::open("main", sim::TcpEndpoint{"127.0.0.1", port}, error);
+  ASSERT_TRUE(server) << error;
+  sim::CanFrame f;
+  ASSERT_TRUE(receive_within(*server, f, 5000));
+  EXPECT_EQ(f, kHeartbeat);
+  EXPECT_EQ(client->wire_dropped(), 0u);
+}
+
 TEST(SocketcandClient, AWrongChannelNeverConnects) {
   auto server = serve();
   std::string error;
