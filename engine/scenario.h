@@ -26,7 +26,7 @@ namespace scenario {
 
 struct BusSpec {
   std::string name;
-  std::string iface;  ///< "" = the in-process virtual bus; else a SocketCAN interface
+  std::string iface;  ///< "" = the in-process virtual bus; else a SocketCAN interface or a socketcand spec
   std::uint32_t bitrate = 500000;  ///< bit/s (documentation of the wire; the virtual bus has no timing)
   SourceMark mark;
 };

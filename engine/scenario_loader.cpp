@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "engine/script_loader.h"
+#include "sim/transport_factory.h"
 
 namespace scenario {
 
@@ -26,8 +27,12 @@ std::vector<BusSpec> read_buses(const YAML::Node& seq, const std::string& file) 
         b.iface.clear();
       } else if (text.rfind("socketcan:", 0) == 0 && text.size() > 10) {
         b.iface = text.substr(10);
+      } else if (sim::is_socketcand_spec(text)) {
+        b.iface = text;  // opened by sim::open_transport when the world is built
       } else {
-        throw LoadError(mark_of(t, file), "transport: '" + text + "' is neither 'virtual' nor 'socketcan:IFACE'");
+        throw LoadError(mark_of(t, file), "transport: '" + text +
+                                              "' is neither 'virtual', 'socketcan:IFACE', 'socketcand:ADDR:PORT' nor "
+                                              "'socketcand-client:HOST:PORT/CHANNEL'");
       }
     }
     if (auto br = r.get("bitrate")) {

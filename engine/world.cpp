@@ -2,7 +2,7 @@
 
 #include "devices/canopen/object_dictionary.h"
 #include "devices/generic/eds_node.h"
-#include "sim/socketcan_transport.h"
+#include "sim/transport_factory.h"
 #include "engine/value_codec.h"
 
 namespace scenario {
@@ -55,7 +55,7 @@ void World::build_buses(const BuildOptions& options) {
     auto bus = std::make_unique<sim::Bus>(spec.name);
     if (!iface.empty()) {
       std::string error;
-      auto transport = sim::SocketCanTransport::open(iface, error);
+      auto transport = sim::open_transport(spec.name, iface, error);
       if (!transport) throw LoadError(spec.mark, "bus '" + spec.name + "': " + error);
       bus->set_transport(std::move(transport));
     }

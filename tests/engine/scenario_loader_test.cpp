@@ -208,3 +208,21 @@ script:
     EXPECT_EQ(std::string(e.what()).rfind("x.yaml:2:", 0), 0u) << e.what();
   }
 }
+
+TEST(ScenarioLoader, BusTransportsIncludeSocketcand) {
+  const auto s = parse_scenario(R"(
+buses:
+  - {name: main, transport: "socketcand:127.0.0.1:29536"}
+  - {name: remote, transport: "socketcand-client:10.0.0.2:29536/can0"}
+)",
+                                "x.yaml", ".");
+  EXPECT_EQ(s.buses[0].iface, "socketcand:127.0.0.1:29536");
+  EXPECT_EQ(s.buses[1].iface, "socketcand-client:10.0.0.2:29536/can0");
+  try {
+    parse_scenario("buses:\n  - {name: main, transport: \"tcp:1\"}\n", "x.yaml", ".");
+    ADD_FAILURE() << "an unknown transport accepted";
+  } catch (const LoadError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("x.yaml:2:", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("'socketcand:ADDR:PORT'"), std::string::npos) << e.what();
+  }
+}

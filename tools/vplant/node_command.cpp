@@ -11,7 +11,7 @@
 #include "sim/bus.h"
 #include "sim/log.h"
 #include "sim/scheduler.h"
-#include "sim/socketcan_transport.h"
+#include "sim/transport_factory.h"
 #include "sim/trace_writer.h"
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exit_codes.h"
@@ -84,9 +84,10 @@ int run_node(const NodeOptions& o) {
     }
   }
 
-  sim::Bus bus(o.can.empty() ? "virtual" : o.can);
+  // A socketcand bus is named `main` (the channel clients open, unless the spec names one).
+  sim::Bus bus(o.can.empty() ? "virtual" : sim::is_socketcand_spec(o.can) ? "main" : o.can);
   if (!o.can.empty()) {
-    auto transport = sim::SocketCanTransport::open(o.can, error);
+    auto transport = sim::open_transport(bus.name(), o.can, error);
     if (!transport) {
       std::fprintf(stderr, "vplant node: %s\n", error.c_str());
       return kExitBadInput;
@@ -148,7 +149,7 @@ Runner add_node_command(CLI::App& app) {
   app.add_option("--device", o->device, "emulated product (see `vplant devices`)");
   app.add_option("--variant", o->variant, "product variant");
   app.add_option("--node-id", o->node_id, "node-ID (default: the product's factory setting)")->check(CLI::Range(1, 127));
-  app.add_option("--can", o->can, "SocketCAN interface (default: the in-process virtual bus)");
+  app.add_option("--can", o->can, "SocketCAN interface, socketcand:ADDR:PORT[/CHANNEL] or socketcand-client:HOST:PORT/CHANNEL (default: the in-process virtual bus)");
   app.add_option("--set", o->inputs, "input=value: hold a device input (e.g. actual=0.5, position=0.1)");
   app.add_option("--setting", o->settings, "knob=value: a product configuration setting (see docs/devices)");
   app.add_option("--store", o->store, "file for the node's non-volatile memory (0x1010 save)");

@@ -66,7 +66,7 @@ int run(const RunArgs& a) {
 Runner add_run_command(CLI::App& app) {
   auto a = std::make_shared<RunArgs>();
   app.add_option("scenario", a->scenario, "scenario file (YAML, see docs/scenarios.md)")->required();
-  app.add_option("--can", a->can, "BUS=IFACE: put a scenario bus on a SocketCAN interface (repeatable)");
+  app.add_option("--can", a->can, "BUS=IFACE: put a scenario bus on a SocketCAN interface, serve it (BUS=socketcand:ADDR:PORT) or join a remote one (BUS=socketcand-client:HOST:PORT/CHANNEL); repeatable");
   app.add_flag("--realtime", a->realtime, "pace the run by the wall clock (default: virtual time, as fast as possible)");
   app.add_flag("--no-script", a->no_script,
                "leave out the file's script and duration: an external master drives the plant (until --duration or Ctrl-C)");

@@ -1,0 +1,65 @@
+// Serves one bus over the socketcand protocol on TCP, so that CAN tools (python-can's
+// `socketcand` interface, SavvyCAN, ...) reach the plant without SocketCAN: the bus name is the
+// channel a client opens. It is the bus's Transport; the sockets live on the server's own thread.
+//
+// Every client in raw mode receives every frame of the bus (the plant's and the other clients'),
+// stamped with the wall clock; a frame a client sends reaches the bus and the other clients, not
+// the sender (like a CAN_RAW socket). A client that breaks the protocol or stops reading is closed
+// with a logged reason; nothing a client does reaches the simulation except well-formed frames.
+// Its name (the trace's interface column) is the bus name, as on the in-process bus.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "sim/queued_transport.h"
+#include "sim/tcp_address.h"
+
+namespace sim {
+
+class SocketcandServer final : public QueuedTransport {
+ public:
+  static constexpr int kMaxClients = 16;
+  /// Output bytes a client may leave unread before it is dropped (a client that never reads).
+  static constexpr std::size_t kMaxPendingOutput = 64 * 1024;
+  /// After `< ok >` to `< rawmode >`, frames wait this long: python-can reads that `< ok >` with
+  /// one recv() and fails if frames arrive in the same segment.
+  static constexpr int kRawmodeSettleMs = 200;
+
+  /// Listens on `endpoint` for clients of bus `channel`. Port 0 picks a free port (see port()).
+  /// A non-loopback address is allowed and logged as a warning. nullptr + `error` on failure.
+  static std::unique_ptr<SocketcandServer> open(const std::string& channel, const TcpEndpoint& endpoint,
+                                                std::string& error);
+  ~SocketcandServer() override;
+
+  std::uint16_t port() const { return port_; }
+  /// Clients connected right now, and clients closed for a protocol error or for not reading.
+  int client_count() const { return clients_now_.load(std::memory_order_relaxed); }
+  std::uint64_t clients_dropped() const { return clients_dropped_.load(std::memory_order_relaxed); }
+
+ private:
+  struct Client;
+  SocketcandServer(std::string name, std::string channel, int listen_fd, std::uint16_t port);
+  void run();
+  void accept_clients();
+  void read_client(Client& c);
+  void handle(Client& c, std::string_view message);
+  void forward_from(Client& from, const CanFrame& frame);
+  void broadcast(const CanFrame& frame, const Client* except);
+  void enqueue(Client& c, std::string_view text);
+  void flush(Client& c);
+  void drop(Client& c, const std::string& reason);
+
+  std::string channel_;
+  int listen_fd_ = -1;
+  std::uint16_t port_ = 0;
+  std::vector<std::unique_ptr<Client>> clients_;  // server thread only
+  std::atomic<int> clients_now_{0};
+  std::atomic<std::uint64_t> clients_dropped_{0};
+  std::thread thread_;
+};
+
+}  // namespace sim

@@ -1,0 +1,425 @@
+// The socketcand server and client transports over loopback TCP, in-process: frames fan out
+// between the bus and several clients, a misbehaving client is closed with a reason while the
+// bus and the other clients carry on, and the client transport joins the server.
+#include "sim/socketcand_server.h"
+
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <functional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "sim/bus.h"
+#include "sim/socketcand_client.h"
+#include "sim/socketcand_protocol.h"
+#include "sim/transport_factory.h"
+
+namespace sc = sim::socketcand;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+bool wait_for(const std::function<bool()>& done, int timeout_ms = 5000) {
+  const auto until = Clock::now() + std::chrono::milliseconds(timeout_ms);
+  while (Clock::now() < until) {
+    if (done()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return done();
+}
+
+// A raw TCP client that speaks the protocol by hand, as python-can or a misbehaving tool would.
+class TcpClient {
+ public:
+  explicit TcpClient(std::uint16_t port, int rcvbuf = 0) {
+    fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (rcvbuf > 0) ::setsockopt(fd_, SOL_SOCKET, SO_RCVBUF, &rcvbuf, sizeof rcvbuf);
+    timeval tv{3, 0};
+    ::setsockopt(fd_, SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(port);
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    connected_ = ::connect(fd_, reinterpret_cast<sockaddr*>(&a), sizeof a) == 0;
+  }
+  ~TcpClient() { ::close(fd_); }
+  bool connected() const { return connected_; }
+
+  /// One recv() of up to 256 bytes, as python-can 4.1 reads the handshake answers.
+  std::string recv_once() {
+    char buf[256];
+    const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
+    return n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : "";
+  }
+  void send(std::string_view text) { ASSERT_EQ(::send(fd_, text.data(), text.size(), MSG_NOSIGNAL), (ssize_t)text.size()); }
+  /// The next message, or "" on EOF / timeout (3 s).
+  std::string next() {
+    for (;;) {
+      std::string_view m;
+      std::string error;
+      const auto r = in_.next(m, error);
+      if (r == sc::Splitter::Result::Message) return std::string(m);
+      if (r == sc::Splitter::Result::Error) return "splitter: " + error;
+      char buf[512];
+      const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
+      if (n <= 0) {
+        eof_ = n == 0;
+        return "";
+      }
+      std::string_view rest(buf, static_cast<std::size_t>(n));
+      while (!rest.empty()) {
+        rest.remove_prefix(in_.feed(rest));
+        if (!rest.empty()) return "splitter full";
+      }
+    }
+  }
+  void handshake(const std::string& channel = "main") {
+    EXPECT_EQ(next(), "< hi >");
+    send("< open " + channel + " >");
+    EXPECT_EQ(next(), "< ok >");
+    send("< rawmode >");
+    EXPECT_EQ(next(), "< ok >");
+  }
+  sim::CanFrame next_frame() {
+    const auto text = next();
+    sc::Message m;
+    std::string error;
+    EXPECT_TRUE(sc::parse(text, m, error)) << text << ": " << error;
+    EXPECT_EQ(m.kind, sc::Kind::Frame) << text;
+    return m.frame;
+  }
+  /// Reads until the server closes the connection; returns the last message seen.
+  std::string last_message_before_close() {
+    std::string last;
+    for (int i = 0; i < 1000; ++i) {
+      auto m = next();
+      if (m.empty()) return eof_ ? last : "timeout";
+      last = m;
+    }
+    return "never closed";
+  }
+
+ private:
+  int fd_ = -1;
+  bool connected_ = false;
+  bool eof_ = false;
+  sc::Splitter in_;
+};
+
+struct Recorder : sim::FrameReceiver {
+  std::vector<sim::CanFrame> frames;
+  void on_frame(const sim::CanFrame& f, sim::Time) override { frames.push_back(f); }
+};
+
+std::unique_ptr<sim::SocketcandServer> serve(const std::string& channel = "main") {
+  std::string error;
+  auto s = sim::SocketcandServer::open(channel, sim::TcpEndpoint{"127.0.0.1", 0}, error);
+  EXPECT_TRUE(s) << error;
+  return s;
+}
+
+bool receive_within(sim::Transport& t, sim::CanFrame& f, int timeout_ms = 3000) {
+  const auto until = Clock::now() + std::chrono::milliseconds(timeout_ms);
+  while (Clock::now() < until) {
+    if (t.receive(f)) return true;
+    pollfd p{t.wait_fd(), POLLIN, 0};
+    ::poll(&p, 1, 10);
+  }
+  return t.receive(f);
+}
+
+const sim::CanFrame kHeartbeat = sim::CanFrame::data_frame(0x705, {0x05});
+const sim::CanFrame kSdo = sim::CanFrame::data_frame(0x601, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0});
+
+}  // namespace
+
+TEST(SocketcandServer, FramesFanOutBetweenTheBusAndEveryClient) {
+  sim::Bus bus("main");
+  bus.set_transport(serve());
+  auto& server = static_cast<sim::SocketcandServer&>(*bus.transport());
+  Recorder plant;
+  const int plant_ep = bus.attach(&plant);
+  TcpClient a(server.port()), b(server.port());
+  ASSERT_TRUE(a.connected() && b.connected());
+  a.handshake();
+  b.handshake();
+
+  // The plant's frame reaches both clients.
+  bus.send(plant_ep, kHeartbeat, sim::Time{});
+  bus.deliver(sim::Time{});
+  EXPECT_EQ(a.next_frame(), kHeartbeat);
+  EXPECT_EQ(b.next_frame(), kHeartbeat);
+
+  // A client's frame reaches the plant (through the bus) and the other client, not itself.
+  a.send("< send 601 8 40 0 10 0 0 0 0 0 >");
+  ASSERT_TRUE(wait_for([&] {
+    bus.poll_transport(sim::Time{});
+    bus.deliver(sim::Time{});
+    return !plant.frames.empty();
+  }));
+  EXPECT_EQ(plant.frames.back(), kSdo);
+  EXPECT_EQ(b.next_frame(), kSdo);
+  // The bus does not echo a wire frame back to the wire, and the server does not echo it to its
+  // sender: the next thing client a sees is the plant's next frame.
+  bus.send(plant_ep, kHeartbeat, sim::Time{});
+  bus.deliver(sim::Time{});
+  EXPECT_EQ(a.next_frame(), kHeartbeat);
+  EXPECT_EQ(b.next_frame(), kHeartbeat);
+  EXPECT_EQ(server.stats().rx_frames, 1u);
+  EXPECT_EQ(server.stats().tx_frames, 2u);
+  EXPECT_TRUE(wait_for([&] { return server.client_count() == 2; }));
+  EXPECT_EQ(server.clients_dropped(), 0u);
+}
+
+TEST(SocketcandServer, HandshakeAnswersArriveAloneWhileTheBusIsBusy) {
+  // python-can 4.1 reads `< hi >` and both `< ok >` with one recv() each and compares the whole
+  // string: no frame may share their segment, however busy the bus.
+  auto server = serve();
+  std::atomic<bool> stop{false};
+  std::thread plant([&] {
+    while (!stop) {
+      server->send(kHeartbeat);
+      server->service(sim::Time{});
+      std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+  });
+  for (int i = 0; i < 3; ++i) {
+    TcpClient c(server->port());
+    EXPECT_EQ(c.recv_once(), "< hi >");
+    c.send("< open main >");
+    EXPECT_EQ(c.recv_once(), "< ok >");
+    c.send("< rawmode >");
+    EXPECT_EQ(c.recv_once(), "< ok >");
+    EXPECT_EQ(c.next_frame(), kHeartbeat);
+  }
+  stop = true;
+  plant.join();
+}
+
+TEST(SocketcandServer, AnswersEchoAndLeavesRawModeOnBcmmode) {
+  auto server = serve();
+  TcpClient a(server->port());
+  a.handshake();
+  a.send("< echo >");
+  EXPECT_EQ(a.next(), "< echo >");
+  a.send("< bcmmode >");
+  EXPECT_EQ(a.next(), "< ok >");
+  server->send(kHeartbeat);  // not for a client in BCM mode
+  server->service(sim::Time{});
+  a.send("< echo >");
+  EXPECT_EQ(a.next(), "< echo >");
+}
+
+TEST(SocketcandServer, ExtendedAndRemoteFramesCrossBothWays) {
+  auto server = serve();
+  TcpClient a(server->port());
+  a.handshake();
+  a.send("< send 1AAAAAAA 2 1 F1 >< sendrtr 701 1 >");
+  sim::CanFrame f;
+  ASSERT_TRUE(receive_within(*server, f));
+  auto ext = sim::CanFrame::data_frame(0x1AAAAAAA, {0x01, 0xF1});
+  ext.extended = true;
+  EXPECT_EQ(f, ext);
+  ASSERT_TRUE(receive_within(*server, f));
+  EXPECT_EQ(f, sim::CanFrame::remote_frame(0x701, 1));
+  server->send(ext);
+  server->service(sim::Time{});
+  EXPECT_EQ(a.next_frame(), ext);
+}
+
+struct BadInput {
+  const char* name;
+  bool before_open;     // sent instead of the handshake
+  std::string text;
+  std::string reason;   // the `< error ... >` the client gets before the close
+};
+
+class SocketcandBadClient : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(SocketcandBadClient, IsClosedWithAReasonWhileTheBusAndOtherClientsContinue) {
+  const auto& bad_input = GetParam();
+  auto server = serve();
+  TcpClient good(server->port()), bad(server->port());
+  good.handshake();
+  if (bad_input.before_open) {
+    EXPECT_EQ(bad.next(), "< hi >");
+  } else {
+    bad.handshake();
+  }
+  bad.send(bad_input.text);
+  EXPECT_EQ(bad.last_message_before_close(), "< error " + bad_input.reason + " >");
+  EXPECT_TRUE(wait_for([&] { return server->clients_dropped() == 1 && server->client_count() == 1; }));
+
+  // Nothing of it reached the bus; the good client still has the bus both ways.
+  sim::CanFrame f;
+  EXPECT_FALSE(server->receive(f));
+  good.send("< send 601 8 40 0 10 0 0 0 0 0 >");
+  ASSERT_TRUE(receive_within(*server, f));
+  EXPECT_EQ(f, kSdo);
+  server->send(kHeartbeat);
+  server->service(sim::Time{});
+  EXPECT_EQ(good.next_frame(), kHeartbeat);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EveryClassOfBadInput, SocketcandBadClient,
+    ::testing::Values(
+        BadInput{"garbage", false, "GET / HTTP/1.1\r\n", "bytes outside a '? ... ?' message: 'GET / HTTP/1.1\\x0D\\x0A'"},
+        BadInput{"overlong", false, "< send " + std::string(300, '1'), "message longer than 128 bytes"},
+        BadInput{"bad_hex", false, "< send 123 1 G1 >", "bad hex byte 'G1'"},
+        BadInput{"wrong_dlc", false, "< send 123 3 1 2 >", "DLC 3 but 2 data byte(s)"},
+        BadInput{"dlc_over_8", false, "< send 123 9 1 2 3 4 5 6 7 8 9 >", "DLC 9 exceeds 8"},
+        BadInput{"unknown_command", false, "< subscribe 0 0 123 >", "unknown command 'subscribe'"},
+        BadInput{"server_message", false, "< frame 123 1.0 00 >", "unexpected '? frame 123 1.0 00 ?' from a client"},
+        BadInput{"unknown_bus", true, "< open can0 >", "unknown bus 'can0' (this server has 'main')"},
+        BadInput{"send_before_open", true, "< send 123 0 >", "expected '? open main ?' first"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SocketcandServer, AClientThatNeverReadsIsDroppedAndTheTransportNeverBlocks) {
+  auto server = serve();
+  TcpClient lazy(server->port(), 4096);
+  lazy.handshake();
+  std::this_thread::sleep_for(std::chrono::milliseconds(sim::SocketcandServer::kRawmodeSettleMs + 50));
+  // Kernel buffers first, then the server's bounded output: the client goes, the bus stays.
+  const auto until = Clock::now() + std::chrono::seconds(20);
+  std::uint64_t sent = 0;
+  while (server->clients_dropped() == 0 && Clock::now() < until) {
+    for (int i = 0; i < 1000; ++i) server->send(kHeartbeat);
+    server->service(sim::Time{});
+    sent += 1000;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  EXPECT_EQ(server->clients_dropped(), 1u) << sent << " frames sent";
+  EXPECT_TRUE(wait_for([&] { return server->client_count() == 0; }));
+  // A new client is served as usual.
+  TcpClient next(server->port());
+  next.handshake();
+  server->send(kSdo);
+  server->service(sim::Time{});
+  EXPECT_EQ(next.next_frame(), kSdo);
+}
+
+TEST(SocketcandServer, RefusesClientsBeyondTheLimit) {
+  auto server = serve();
+  std::vector<std::unique_ptr<TcpClient>> clients;
+  for (int i = 0; i < sim::SocketcandServer::kMaxClients; ++i) {
+    clients.push_back(std::make_unique<TcpClient>(server->port()));
+    EXPECT_EQ(clients.back()->next(), "< hi >");
+  }
+  TcpClient one_too_many(server->port());
+  EXPECT_EQ(one_too_many.last_message_before_close(), "< error too many clients >");
+}
+
+TEST(SocketcandClient, JoinsAServerAndExchangesFramesBothWays) {
+  auto server = serve("can0");
+  std::string error;
+  auto client = sim::SocketcandClient::open(sim::TcpEndpoint{"127.0.0.1", server->port()}, "can0", error);
+  ASSERT_TRUE(client) << error;
+  EXPECT_EQ(client->name(), "can0");
+  ASSERT_TRUE(wait_for([&] { return client->connected(); }));
+  TcpClient observer(server->port());
+  observer.handshake("can0");
+  std::this_thread::sleep_for(std::chrono::milliseconds(sim::SocketcandServer::kRawmodeSettleMs + 50));
+
+  // Our bus → the remote bus (the server's side) and its other clients.
+  client->send(kSdo);
+  client->service(sim::Time{});
+  sim::CanFrame f;
+  ASSERT_TRUE(receive_within(*server, f));
+  EXPECT_EQ(f, kSdo);
+  EXPECT_EQ(observer.next_frame(), kSdo);
+  // The remote bus → our bus, from the server's side and from another client.
+  server->send(kHeartbeat);
+  server->service(sim::Time{});
+  ASSERT_TRUE(receive_within(*client, f));
+  EXPECT_EQ(f, kHeartbeat);
+  auto ext = sim::CanFrame::data_frame(0x18FF0102, {1, 2, 3, 4, 5, 6, 7, 8});
+  ext.extended = true;
+  observer.send("< send 18FF0102 8 1 2 3 4 5 6 7 8 >");
+  ASSERT_TRUE(receive_within(*client, f));
+  EXPECT_EQ(f, ext);
+  EXPECT_EQ(client->stats().rx_frames, 2u);
+}
+
+TEST(SocketcandClient, ReconnectsWhenTheServerComesBack) {
+  auto server = serve();
+  const auto port = server->port();
+  std::string error;
+  auto client = sim::SocketcandClient::open(sim::TcpEndpoint{"127.0.0.1", port}, "main", error);
+  ASSERT_TRUE(client) << error;
+  ASSERT_TRUE(wait_for([&] { return client->connected(); }));
+  server.reset();
+  ASSERT_TRUE(wait_for([&] { return !client->connected(); }));
+  // Frames sent while the link is down are counted, never queued without bound.
+  client->send(kSdo);
+  client->service(sim::Time{});
+  EXPECT_TRUE(wait_for([&] { return client->wire_dropped() == 1; }));
+  server = sim::SocketcandServer::open("main", sim::TcpEndpoint{"127.0.0.1", port}, error);
+  ASSERT_TRUE(server) << error;
+  ASSERT_TRUE(wait_for([&] { return client->connected(); }, 5000));
+  client->service(sim::Time{});
+  EXPECT_EQ(client->stats().link_down_events, 1u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(sim::SocketcandServer::kRawmodeSettleMs + 50));
+  server->send(kHeartbeat);
+  server->service(sim::Time{});
+  sim::CanFrame f;
+  ASSERT_TRUE(receive_within(*client, f));
+  EXPECT_EQ(f, kHeartbeat);
+}
+
+TEST(SocketcandClient, FramesSentBeforeTheFirstConnectionWaitForIt) {
+  // A node's boot-up is sent at power-on, before the connection is up: it is not lost.
+  std::uint16_t port = serve()->port();  // a port that was free a moment ago
+  std::string error;
+  auto client = sim::SocketcandClient::open(sim::TcpEndpoint{"127.0.0.1", port}, "main", error);
+  ASSERT_TRUE(client) << error;
+  client->send(kHeartbeat);
+  client->service(sim::Time{});
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  auto server = sim::SocketcandServer::open("main", sim::TcpEndpoint{"127.0.0.1", port}, error);
+  ASSERT_TRUE(server) << error;
+  sim::CanFrame f;
+  ASSERT_TRUE(receive_within(*server, f, 5000));
+  EXPECT_EQ(f, kHeartbeat);
+  EXPECT_EQ(client->wire_dropped(), 0u);
+}
+
+TEST(SocketcandClient, AWrongChannelNeverConnects) {
+  auto server = serve();
+  std::string error;
+  auto client = sim::SocketcandClient::open(sim::TcpEndpoint{"127.0.0.1", server->port()}, "can9", error);
+  ASSERT_TRUE(client) << error;
+  EXPECT_TRUE(wait_for([&] { return server->clients_dropped() >= 1; }));
+  EXPECT_FALSE(client->connected());
+}
+
+TEST(TransportFactory, ParsesEverySpelling) {
+  std::string error;
+  auto t = sim::open_transport("main", "socketcand:127.0.0.1:0", error);
+  ASSERT_TRUE(t) << error;
+  EXPECT_EQ(t->name(), "main");
+  t = sim::open_transport("main", "socketcand:127.0.0.1:0/can1", error);
+  ASSERT_TRUE(t) << error;
+  EXPECT_EQ(t->name(), "can1");
+  t = sim::open_transport("main", "socketcand-client:127.0.0.1:1/can0", error);
+  ASSERT_TRUE(t) << error;
+  EXPECT_EQ(t->name(), "can0");
+  EXPECT_FALSE(sim::open_transport("main", "socketcand-client:127.0.0.1:1", error));
+  EXPECT_EQ(error, "'socketcand-client:127.0.0.1:1': expected socketcand-client:HOST:PORT/CHANNEL");
+  EXPECT_FALSE(sim::open_transport("main", "socketcand:127.0.0.1", error));
+  EXPECT_EQ(error, "'socketcand:127.0.0.1': '127.0.0.1' is not HOST:PORT");
+  EXPECT_FALSE(sim::open_transport("main", "socketcand:127.0.0.1:70000", error));
+  EXPECT_EQ(error, "'socketcand:127.0.0.1:70000': port '70000' is not a number from 0 to 65535");
+  EXPECT_FALSE(sim::open_transport("main", "socketcand:127.0.0.1:0/", error));
+  EXPECT_TRUE(sim::is_socketcand_spec("socketcand:x:1"));
+  EXPECT_FALSE(sim::is_socketcand_spec("vcan0"));
+}
