@@ -1,5 +1,6 @@
-// Samples chosen signals at a fixed period: streams them to the CSV file and keeps the series the
-// plots need. Runs after the devices and before the plant in each tick, so a row holds the plant
+// Samples chosen signals at a fixed period: streams them to the CSV file (through a fixed 64 KiB
+// buffer, written out when full: memory stays flat however long the run) and keeps the series the
+// plots need, bounded by PlotSamples (at most PlotSamples::kMaxPoints points per series). Runs after the devices and before the plant in each tick, so a row holds the plant
 // state at `now` and the device outputs commanded for [now, now + dt].
 #pragma once
 
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "sim/scheduler.h"
+#include "engine/plot_samples.h"
 #include "engine/signal_source.h"
 
 namespace scenario {
@@ -24,10 +26,15 @@ class Recorder final : public sim::Steppable {
   std::string open_csv(const std::string& path);
 
   void step(sim::Time now, sim::Duration dt) override;
-  void close();
+  /// Flushes and closes the CSV file; returns the first write error ("cannot write 'PATH':
+  /// reason"), empty if every row reached the file. Rows after an error are not written.
+  std::string close();
+  /// The first CSV write error, empty while every write succeeded.
+  const std::string& error() const { return error_; }
 
-  const std::vector<double>& times() const { return times_; }
-  const std::vector<double>& series(int column) const { return kept_[static_cast<std::size_t>(column)]; }
+  /// The plot points of the kept signals (decimated, see PlotSamples).
+  std::vector<double> times() const { return plot_.times(); }
+  std::vector<double> series(int column) const;
   std::size_t rows() const { return rows_; }
   bool empty() const { return signals_.empty(); }
 
@@ -37,12 +44,16 @@ class Recorder final : public sim::Steppable {
   std::vector<Signal> signals_;
   std::vector<bool> keep_;
   std::vector<bool> in_csv_;
-  std::vector<std::vector<double>> kept_;
-  std::vector<double> times_;
+  void fail(int err);
+
+  std::vector<int> kept_index_;  // column → its series in plot_, -1 if not kept
+  std::vector<double> kept_row_;  // one row of kept values (sized by add(), reused every sample)
+  PlotSamples plot_;
   std::FILE* csv_ = nullptr;
+  std::string csv_path_;
+  std::string error_;
   std::vector<char> buffer_;
   std::size_t rows_ = 0;
-  bool any_kept_ = false;
 };
 
 }  // namespace scenario

@@ -145,6 +145,19 @@ int Runner::run() {
   auto& sched = *m.scheduler;
   const bool realtime = sched.mode() == sim::ClockMode::RealTime;
   for (auto& n : m.world->nodes()) n.device->power_on(sched.now());
+  // One line when the nodes are up, so a master programmer (real time, or an external master with
+  // --no-script) knows where to connect before anything else happens.
+  if (!m.options.quiet && (realtime || m.options.no_script)) {
+    std::string line = "vplant run: " + m.scenario.name + " is up:";
+    for (std::size_t b = 0; b < m.world->buses().size(); ++b) {
+      const auto& bus = *m.world->buses()[b];
+      line += (b ? "; bus " : " bus ") + bus.name() + " on " + (bus.transport() ? std::string(bus.transport()->name()) : "the virtual bus") + ":";
+      for (const auto& n : m.world->nodes())
+        if (n.bus == static_cast<int>(b)) line += " " + n.spec->name + "=" + std::to_string(n.node_id);
+    }
+    std::fprintf(m.options.out, "%s%s\n", line.c_str(), realtime && !m.duration ? " (Ctrl-C stops)" : "");
+    std::fflush(m.options.out);
+  }
 
   const double wall_start = wall_now();
   double next_progress = wall_start + 0.5;
@@ -174,20 +187,28 @@ int Runner::run() {
   const double wall = wall_now() - wall_start;
   m.summary.interrupted = sched.stop_requested();
   m.master->finish(sched.now());
-  m.recorder->close();
-  if (m.trace) m.trace->flush();
   g_active.store(nullptr);
 
   int rc = m.verdicts.failures() ? 1 : 0;
+  // A trace or CSV that lost lines (disk full, EIO) is an output that could not be written.
+  for (const std::string& error : {m.recorder->close(), m.trace ? m.trace->close() : std::string()}) {
+    if (error.empty()) continue;
+    std::fprintf(m.options.out, "vplant run: %s\n", error.c_str());
+    rc = 2;
+  }
   for (const auto& [spec, columns] : m.plots) {
     PlotInput in;
     in.title = spec->title.empty() ? m.scenario.name : spec->title;
     in.y_label = spec->y_label;
     in.width = spec->width;
     in.height = spec->height;
-    in.times = &m.recorder->times();
+    const std::vector<double> times = m.recorder->times();
+    std::vector<std::vector<double>> values;
+    values.reserve(columns.size());
+    for (int column : columns) values.push_back(m.recorder->series(column));
+    in.times = &times;
     for (std::size_t i = 0; i < columns.size(); ++i)
-      in.series.push_back({spec->labels[i].empty() ? spec->signals[i].text : spec->labels[i], &m.recorder->series(columns[i])});
+      in.series.push_back({spec->labels[i].empty() ? spec->signals[i].text : spec->labels[i], &values[i]});
     std::string error = prepare_output(spec->file);
     if (error.empty()) error = write_plot(in, spec->file);
     if (!error.empty()) {
@@ -254,6 +275,12 @@ int run_scenario_file(const std::string& path, const Environment& env, const Run
       // until --duration or, in real time, until SIGINT/SIGTERM.
       s.script.clear();
       s.clock.duration.reset();
+      // The file's outputs describe its scripted run; a session for an external master writes
+      // only what the command line asks for (--trace, --csv, --junit).
+      s.outputs.trace.clear();
+      s.outputs.csv.reset();
+      s.outputs.plots.clear();
+      s.outputs.junit.clear();
     }
     Runner runner(s, env, options);
     return runner.run();

@@ -89,4 +89,19 @@ std::vector<EdsError> check_eds_file(const std::string& path);
 /// parse_eds() of the text reproduces the dictionary without warnings.
 std::string write_eds(const ObjectDictionary& od, const EdsFileInfo& info);
 
+/// [DeviceComissioning] of a DCF: where and as what the node is configured in its network.
+struct DcfCommissioning {
+  std::uint8_t node_id = 0;
+  std::string node_name;
+  unsigned baudrate_kbit = 0;  ///< 0 = not stated
+  std::uint32_t net_number = 0;
+  std::string network_name;
+};
+
+/// Writes `od` as a CiA 306 DCF: write_eds()'s text plus [DeviceComissioning] and, on every
+/// entry but write-only ones and DOMAINs, ParameterValue= with its current value (node-relative
+/// entries resolved for the node-ID). parse_eds() of the text gives a dictionary whose defaults
+/// are those values.
+std::string write_dcf(const ObjectDictionary& od, const EdsFileInfo& info, const DcfCommissioning& commissioning);
+
 }  // namespace canopen

@@ -61,16 +61,21 @@ bool is_written(const OdObject& o) { return !o.entries.empty() && o.code != Obje
 
 bool single_entry(ObjectCode c) { return c == ObjectCode::Var || c == ObjectCode::Domain || c == ObjectCode::DefType; }
 
-void write_entry_keys(Writer& w, const OdEntry& e) {
+// A DCF states the value the node holds (node-relative ones resolved); not for entries a master
+// cannot read back (write-only) or that have no fixed value (DOMAIN).
+bool has_parameter_value(const OdEntry& e) { return e.access != Access::WriteOnly && e.type != DataType::Domain; }
+
+void write_entry_keys(Writer& w, const OdEntry& e, bool dcf) {
   w.key("DataType", "0x" + hex(static_cast<std::uint16_t>(e.type), 4));
   w.key("AccessType", access_text(e));
   w.key("DefaultValue", format_value(e.type, e.default_value, e.node_id_relative));
+  if (dcf && has_parameter_value(e)) w.key("ParameterValue", format_value(e.type, e.value, false));
   w.key("PDOMapping", e.pdo_mappable ? 1 : 0);
   if (e.low_limit) w.key("LowLimit", format_value(e.type, *e.low_limit, false));
   if (e.high_limit) w.key("HighLimit", format_value(e.type, *e.high_limit, false));
 }
 
-void write_object(Writer& w, const OdObject& o) {
+void write_object(Writer& w, const OdObject& o, bool dcf) {
   const std::string index = hex(o.index, 4);
   w.section(index);
   const OdEntry& first = o.entries.begin()->second;
@@ -78,7 +83,7 @@ void write_object(Writer& w, const OdObject& o) {
   w.key("ObjectType", "0x" + hex(static_cast<unsigned>(o.code), 1));
   if (single_entry(o.code)) {
     if (o.obj_flags != 0) w.key("ObjFlags", "0x" + hex(o.obj_flags, 8));
-    write_entry_keys(w, first);
+    write_entry_keys(w, first, dcf);
     return;
   }
   w.key("SubNumber", o.entries.size());
@@ -87,7 +92,7 @@ void write_object(Writer& w, const OdObject& o) {
     w.section(index + "sub" + hex(sub, 1));
     w.key("ParameterName", e.name);
     w.key("ObjectType", "0x7");
-    write_entry_keys(w, e);
+    write_entry_keys(w, e, dcf);
   }
 }
 
@@ -103,9 +108,7 @@ unsigned count_objects(const ObjectDictionary& od, std::uint16_t first, std::uin
   return n;
 }
 
-}  // namespace
-
-std::string write_eds(const ObjectDictionary& od, const EdsFileInfo& info) {
+std::string write_file(const ObjectDictionary& od, const EdsFileInfo& info, const DcfCommissioning* dcf) {
   Writer w;
   w.section("FileInfo");
   w.key("FileName", info.file_name);
@@ -142,6 +145,17 @@ std::string write_eds(const ObjectDictionary& od, const EdsFileInfo& info) {
   w.key("NrOfTXPDO", count_objects(od, 0x1800, 0x19FF));
   w.key("LSS_Supported", info.lss_supported ? 1 : 0);
 
+  if (dcf) {
+    w.section("DeviceComissioning");  // CiA 306's spelling
+    w.key("NodeID", "0x" + hex(dcf->node_id, 2));
+    w.key("NodeName", dcf->node_name);
+    if (dcf->baudrate_kbit != 0) w.key("Baudrate", dcf->baudrate_kbit);
+    w.key("NetNumber", dcf->net_number);
+    w.key("NetworkName", dcf->network_name);
+    w.key("CANopenManager", 0);
+    w.key("LSS_SerialNumber", identity(od, 4, 0));
+  }
+
   w.section("DummyUsage");
   for (unsigned t = 1; t <= 7; ++t) {
     const OdObject* o = od.object(static_cast<std::uint16_t>(t));
@@ -169,9 +183,17 @@ std::string write_eds(const ObjectDictionary& od, const EdsFileInfo& info) {
     w.section(name);
     w.key("SupportedObjects", members.size());
     for (std::size_t i = 0; i < members.size(); ++i) w.key(std::to_string(i + 1), "0x" + hex(members[i]->index, 4));
-    for (const OdObject* o : members) write_object(w, *o);
+    for (const OdObject* o : members) write_object(w, *o, dcf != nullptr);
   }
   return w.take();
+}
+
+}  // namespace
+
+std::string write_eds(const ObjectDictionary& od, const EdsFileInfo& info) { return write_file(od, info, nullptr); }
+
+std::string write_dcf(const ObjectDictionary& od, const EdsFileInfo& info, const DcfCommissioning& commissioning) {
+  return write_file(od, info, &commissioning);
 }
 
 }  // namespace canopen

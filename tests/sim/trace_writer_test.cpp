@@ -42,3 +42,38 @@ TEST(TraceWriter, ReportsUnwritablePath) {
   EXPECT_FALSE(w.is_open());
   EXPECT_NE(error.find("/nonexistent-dir/x.log"), std::string::npos);
 }
+
+// A full disk loses lines: close() says so with the path and the reason instead of success.
+TEST(TraceWriter, ReportsWriteFailureOnAFullDevice) {
+  std::string error;
+  sim::TraceWriter w("/dev/full", error);
+  ASSERT_TRUE(w.is_open()) << error;
+  sim::Bus bus("vcan0");
+  struct Nop : sim::FrameReceiver {
+    void on_frame(const sim::CanFrame&, sim::Time) override {}
+  } a, b;
+  const int ea = bus.attach(&a);
+  bus.attach(&b);
+  bus.add_tap(&w);
+  for (int i = 0; i < 10; ++i) {
+    bus.send(ea, sim::CanFrame::data_frame(0x181, {1, 2, 3, 4}), sim::Time{});
+    bus.deliver(sim::Time{});
+  }
+  EXPECT_TRUE(w.error().empty());  // still in the buffer
+  EXPECT_FALSE(w.flush());
+  EXPECT_EQ(w.close(), "cannot write trace '/dev/full': No space left on device");
+  EXPECT_EQ(w.close(), "cannot write trace '/dev/full': No space left on device");  // stays reported
+}
+
+TEST(TraceWriter, CloseOfAGoodFileReportsNothing) {
+  char path[] = "/tmp/vplant-trace-XXXXXX";
+  const int fd = mkstemp(path);
+  ASSERT_GE(fd, 0);
+  close(fd);
+  std::string error;
+  sim::TraceWriter w(path, error);
+  ASSERT_TRUE(w.is_open()) << error;
+  EXPECT_TRUE(w.flush());
+  EXPECT_EQ(w.close(), "");
+  std::remove(path);
+}

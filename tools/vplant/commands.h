@@ -14,5 +14,6 @@ Runner add_node_command(CLI::App& app);
 Runner add_eds_command(CLI::App& app);
 Runner add_devices_command(CLI::App& app);
 Runner add_run_command(CLI::App& app);
+Runner add_dcf_command(CLI::App& app);
 
 }  // namespace vplant

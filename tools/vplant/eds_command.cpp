@@ -1,13 +1,17 @@
-// `vplant eds NAME`: a product's EDS file (generated from its emulated object dictionary).
+// `vplant eds NAME`: a product's EDS file (generated from its emulated object dictionary), as it
+// leaves the factory or, with --setting/--node-id, as that configuration has it.
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
+#include <vector>
 #include <string>
 
 #include "devices/canopen/eds.h"
+#include "devices/configured_eds.h"
 #include "devices/registry.h"
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exit_codes.h"
+#include "tools/vplant/key_value.h"
+#include "tools/vplant/text_output.h"
 
 namespace vplant {
 
@@ -16,6 +20,8 @@ namespace {
 struct EdsOptions {
   std::string product;
   std::string variant;
+  std::vector<std::string> settings;
+  int node_id = 0;
   std::string output;
   std::string check;
 };
@@ -47,17 +53,25 @@ int run_eds(const EdsOptions& o) {
     std::fprintf(stderr, "vplant eds: device '%s' has no variant '%s'\n", o.product.c_str(), o.variant.c_str());
     return kExitBadInput;
   }
-  const std::string text = product->eds(o.variant);
-  if (o.output.empty() || o.output == "-") {
-    std::fwrite(text.data(), 1, text.size(), stdout);
-    return kExitOk;
+  std::string text;
+  if (o.settings.empty() && o.node_id == 0) {
+    text = product->eds(o.variant);
+  } else {
+    devices::DeviceOptions options;
+    options.variant = o.variant;
+    options.node_id = static_cast<std::uint8_t>(o.node_id);
+    std::string error;
+    if (!parse_key_values(o.settings, options.settings, error)) {
+      std::fprintf(stderr, "vplant eds: --setting %s\n", error.c_str());
+      return kExitBadInput;
+    }
+    text = devices::configured_eds(*product, options, error);
+    if (text.empty()) {
+      std::fprintf(stderr, "vplant eds: %s\n", error.c_str());
+      return kExitBadInput;
+    }
   }
-  std::ofstream out(o.output, std::ios::binary);
-  if (!(out << text)) {
-    std::fprintf(stderr, "vplant eds: cannot write '%s'\n", o.output.c_str());
-    return kExitBadInput;
-  }
-  return kExitOk;
+  return write_text_output("vplant eds", text, o.output);
 }
 
 }  // namespace
@@ -67,6 +81,9 @@ Runner add_eds_command(CLI::App& app) {
   app.add_option("device", o->product, "product name (see `vplant devices`)");
   app.add_option("--check", o->check, "check an EDS file: print its errors and warnings as file:line");
   app.add_option("--variant", o->variant, "product variant");
+  app.add_option("--setting", o->settings,
+                 "knob=value: the EDS of the node with this configuration setting, e.g. its PDO mapping (repeatable)");
+  app.add_option("--node-id", o->node_id, "write node-relative values (COB-IDs) for this node-ID")->check(CLI::Range(1, 127));
   app.add_option("-o,--output", o->output, "write to FILE instead of stdout");
   return [o] { return run_eds(*o); };
 }

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   add("eds", "print a product's EDS file, or check an EDS file", vplant::add_eds_command);
   add("devices", "list the emulated products", vplant::add_devices_command);
   add("run", "run a scenario: the whole plant, a scripted master, faults and checks", vplant::add_run_command);
+  add("dcf", "write the DCF of a scenario's node: its configured values and node-ID", vplant::add_dcf_command);
 
   try {
     app.parse(argc, argv);

@@ -123,7 +123,7 @@ int run_node(const NodeOptions& o) {
     scheduler.run_until_stopped();
   }
   g_running = nullptr;
-  if (trace) trace->flush();
+  const std::string trace_error = trace ? trace->close() : std::string();
 
   const auto& st = scheduler.stats();
   std::fprintf(stderr, "vplant node: %.3f s simulated, %llu frames on the bus", sim::seconds(scheduler.now()),
@@ -138,6 +138,10 @@ int run_node(const NodeOptions& o) {
                  static_cast<unsigned long long>(ts.tx_dropped));
   }
   std::fprintf(stderr, "\n");
+  if (!trace_error.empty()) {
+    std::fprintf(stderr, "vplant node: %s\n", trace_error.c_str());
+    return kExitBadInput;
+  }
   return kExitOk;
 }
 

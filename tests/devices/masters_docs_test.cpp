@@ -1,0 +1,70 @@
+// docs/masters.md's summary table is true of the emulation: each product's factory node-ID, its
+// heartbeat producer (1017h, 0 after power-on) and its heartbeat consumer (1016h).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "devices/canopen/node.h"
+#include "devices/registry.h"
+
+namespace {
+
+std::string row_of(const std::string& doc, const std::string& label) {
+  const auto at = doc.find("\n| " + label + " |");
+  if (at == std::string::npos) return {};
+  return doc.substr(at + 1, doc.find('\n', at + 1) - at - 1);
+}
+
+std::string cell(const std::string& row, int n) {  // 0 = the label
+  std::size_t at = 0;
+  for (int i = 0; i <= n; ++i) at = row.find('|', at) + 1;
+  const auto end = row.find('|', at);
+  std::string c = row.substr(at, end - at);
+  c.erase(0, c.find_first_not_of(' '));
+  c.erase(c.find_last_not_of(' ') + 1);
+  return c;
+}
+
+}  // namespace
+
+TEST(MastersDocs, SummaryTableMatchesTheProducts) {
+  std::ifstream file(std::string(VPLANT_SOURCE_DIR) + "/docs/masters.md");
+  ASSERT_TRUE(file) << "docs/masters.md missing";
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string doc = text.str();
+  for (const auto& [label, name] : {std::pair{"MD2", "md2"}, std::pair{"DSV", "dsv"}, std::pair{"VT-VPCD", "vtvpcd"},
+                                    std::pair{"HLT 1100", "hlt1100"}, std::pair{"WDGA", "wdga"}}) {
+    const std::string row = row_of(doc, label);
+    ASSERT_FALSE(row.empty()) << label;
+    const devices::Product* product = devices::find_product(name);
+    ASSERT_NE(product, nullptr) << name;
+    std::string error;
+    auto device = product->make(devices::DeviceOptions{}, error);
+    ASSERT_NE(device, nullptr) << error;
+    device->power_on(sim::Time{});
+    auto& node = device->node();
+    const int documented_id = std::stoi(cell(row, 1));
+    const int id = node.node_id() != 0 && node.node_id() != canopen::Node::kUnconfigured ? node.node_id() : node.pending_node_id();
+    EXPECT_EQ(id, documented_id) << label;
+
+    const canopen::OdEntry* producer = node.od().entry(0x1017, 0);
+    if (cell(row, 2) == "no") {
+      EXPECT_EQ(producer, nullptr) << label;
+    } else {
+      EXPECT_EQ(cell(row, 2), "yes, 0") << label;
+      ASSERT_NE(producer, nullptr) << label;
+      EXPECT_EQ(canopen::decode_unsigned(producer->value), 0u) << label;
+    }
+    const canopen::OdEntry* consumers = node.od().entry(0x1016, 0);
+    if (cell(row, 3) == "no") {
+      EXPECT_TRUE(consumers == nullptr || canopen::decode_unsigned(consumers->value) == 0) << label;
+    } else {
+      EXPECT_EQ(cell(row, 3), "1016h:01") << label;
+      ASSERT_NE(consumers, nullptr) << label;
+      EXPECT_EQ(canopen::decode_unsigned(consumers->value), 1u) << label;
+    }
+  }
+}
