@@ -153,7 +153,7 @@ void SocketcandServer::accept_clients() {
     auto c = std::make_unique<Client>();
     c->fd = fd;
     c->peer = who;
-    c->out.reserve(kMaxPendingOutput);
+    c->out.reserve(64 * 1024);  // grows (on this thread) up to kMaxPendingOutput if needed
     log(LogLevel::Info, "socketcand: bus '{}': client {} connected", channel_, who);
     enqueue(*c, "< hi >");
     clients_.push_back(std::move(c));

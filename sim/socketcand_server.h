@@ -23,8 +23,10 @@ namespace sim {
 class SocketcandServer final : public QueuedTransport {
  public:
   static constexpr int kMaxClients = 16;
-  /// Output bytes a client may leave unread before it is dropped (a client that never reads).
-  static constexpr std::size_t kMaxPendingOutput = 64 * 1024;
+  /// Output bytes a client may leave unread (beyond the kernel's socket buffers) before it is
+  /// dropped as one that never reads: about 20,000 frames, 2.5 s of a saturated 1 Mbit/s bus, so
+  /// a client that is merely descheduled for a while is not dropped.
+  static constexpr std::size_t kMaxPendingOutput = 1024 * 1024;
   /// After `< ok >` to `< rawmode >`, frames wait this long: python-can reads that `< ok >` with
   /// one recv() and fails if frames arrive in the same segment.
   static constexpr int kRawmodeSettleMs = 200;
