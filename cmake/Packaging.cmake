@@ -10,6 +10,8 @@ set(CPACK_PACKAGE_CONTACT "vplant maintainers <vplant@localhost>")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "multi-node virtual plant simulator: emulated CANopen nodes and hydraulic physics")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_PACKAGE_SECTION devel)
+set(CPACK_STRIP_FILES ON)
+set(CPACK_DEBIAN_COMPRESSION_TYPE gzip)  # fast; xz saves little on stripped objects
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
     "libyaml-cpp-dev, libfmt-dev, libeigen3-dev, libode-dev, libpng-dev, pkg-config, cmake, g++")

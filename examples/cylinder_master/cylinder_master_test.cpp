@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 
 #include "cylinder_master.h"
 
@@ -56,13 +57,14 @@ TEST(CylinderMaster, ReachesTwoHundredMillimetresInTheTimeFlowOverAreaPredicts) 
   const double stroke = 0.200;
   const double predicted = stroke * area / q;  // 0.70 s for the reference plant
   const double elapsed = seconds(master.reached_at() - master.valve_active_at());
+  std::printf("200 mm in %.3f s after DEVICE_MODE_ACTIVE; flow/area predicts %.3f s\n", elapsed, predicted);
 
   // Faster than Q / A is impossible but for the oil the compressed supply line gives back as the
   // pressure falls (1.5 L at up to 250 bar, ≤ 27 cm³ ≈ 9 mm of stroke): 10 % below. Slower by
   // the volumetric efficiency (0.96), the valve spool's and the pump's settling and the
-  // compression of the cap side at the start: 20 % above.
+  // compression of the cap side at the start: 10 % above (the reference plant: 0.710 s for 0.702 s).
   EXPECT_GE(elapsed, 0.9 * predicted) << "predicted " << predicted << " s";
-  EXPECT_LE(elapsed, 1.2 * predicted) << "predicted " << predicted << " s";
+  EXPECT_LE(elapsed, 1.1 * predicted) << "predicted " << predicted << " s";
   // The TPDO the master saw agrees with the plant.
   EXPECT_NEAR(sim.signal("cyl.position"), master.position_steps() * 1e-4, 0.005);
   EXPECT_EQ(sim.signal("dsv.nmt_state"), 5);  // Operational
@@ -72,7 +74,7 @@ TEST(CylinderMaster, TwoRunsGiveTheSameTrace) {
   std::size_t frames_a = 0, frames_b = 0;
   const auto a = run_once(&frames_a);
   const auto b = run_once(&frames_b);
-  EXPECT_GT(frames_a, 1000u);
+  EXPECT_GT(frames_a, 500u);  // 2.3 s: boot-ups, SYNC + TPDO2 every 10 ms, heartbeats, PDOs
   EXPECT_EQ(frames_a, frames_b);
   EXPECT_EQ(a, b);
 }
