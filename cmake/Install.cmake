@@ -5,6 +5,9 @@
 #   include/vplant/*.h              share/vplant/eds/*.eds        share/vplant/scenarios/
 #   share/doc/vplant/ (README.md, docs/)
 include(CMakePackageConfigHelpers)
+# Install and package what is built (`cmake --build` first): CPack's preinstall step then does
+# not rebuild the whole tree, tests included, one job at a time.
+set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 # The static libraries vplant_api links, transitively: a consumer links them all, so the export
 # must name each (a library another part of the tree adds to the engine follows automatically).
