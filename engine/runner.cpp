@@ -8,6 +8,7 @@
 #include "sim/trace_writer.h"
 #include "engine/fault_injector.h"
 #include "engine/junit_writer.h"
+#include "engine/node_group.h"
 #include "engine/plot.h"
 #include "engine/recorder.h"
 #include "engine/scenario_loader.h"
@@ -19,20 +20,6 @@ namespace scenario {
 namespace {
 
 std::atomic<Runner*> g_active{nullptr};
-
-/// Steps every node of the world in scenario order (one scheduler component for all of them).
-class NodeGroup final : public sim::Steppable {
- public:
-  explicit NodeGroup(World& world) {
-    for (auto& n : world.nodes()) nodes_.push_back(&n.device->node());
-  }
-  void step(sim::Time now, sim::Duration dt) override {
-    for (auto* n : nodes_) n->step(now, dt);
-  }
-
- private:
-  std::vector<canopen::Node*> nodes_;
-};
 
 std::string prepare_output(const std::string& path) {
   const auto parent = std::filesystem::path(path).parent_path();
