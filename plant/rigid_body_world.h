@@ -5,6 +5,7 @@
 // speed 0), which gives exact stiction: a body stays at rest until the force exceeds the limit.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -44,6 +45,8 @@ class RigidBodyWorld {
   double friction_loss(DofId dof) const;
   /// Kinetic energy lost in the last step by an inelastic impact on an end stop (J).
   double impact_loss(DofId dof) const;
+  /// Steps in which ODE stepped at least one body (the others were sliding freely).
+  std::uint64_t ode_steps() const { return ode_steps_; }
 
  private:
   struct Dof;
@@ -51,6 +54,7 @@ class RigidBodyWorld {
 
   dxWorld* world_;
   std::vector<std::unique_ptr<Dof>> dofs_;
+  std::uint64_t ode_steps_ = 0;
 };
 
 }  // namespace plant
