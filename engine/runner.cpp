@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "sim/scheduler.h"
+#include "sim/tick_profile.h"
 #include "sim/trace_writer.h"
 #include "engine/fault_injector.h"
 #include "engine/junit_writer.h"
@@ -27,6 +28,7 @@ class NodeGroup final : public sim::Steppable {
     for (auto& n : world.nodes()) nodes_.push_back(&n.device->node());
   }
   void step(sim::Time now, sim::Duration dt) override {
+    const sim::TickProbe probe(sim::TickPart::Nodes);
     for (auto* n : nodes_) n->step(now, dt);
   }
 

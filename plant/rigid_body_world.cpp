@@ -25,7 +25,8 @@ void ensure_ode_initialised() {
 constexpr double kStopInset = 1e-12;
 
 // A friction motor counts as saturated (the body slides on) when the force needed to stop the body
-// within the step exceeds its limit by this fraction; closer cases are left to ODE's LCP.
+// within the step exceeds its limit by this fraction, and as holding when it stays below it by
+// this fraction; the cases between are left to ODE's LCP.
 constexpr double kSaturationMargin = 1e-9;
 
 }  // namespace
@@ -44,7 +45,8 @@ struct RigidBodyWorld::Dof {
   double friction_loss = 0.0;
   double impact_loss = 0.0;
   bool enabled = true;       // the ODE body takes part in dWorldStep
-  bool closed_form = false;  // this step: sliding freely, integrated in closed form
+  bool closed_form = false;  // this step: integrated in closed form, not by ODE
+  bool resting = false;      // closed form: held at rest by its friction motor
   double motor_force = 0.0;  // closed form: the saturated friction motor's force on the body
 };
 
@@ -142,23 +144,28 @@ double RigidBodyWorld::impact_loss(DofId dof) const { return at(dof).impact_loss
 
 void RigidBodyWorld::step(double h, const std::vector<double>& force, const std::vector<double>& friction_limit) {
   const sim::TickProbe probe(sim::TickPart::Ode);
-  // Which bodies ODE steps: a body whose friction motor saturates (it slides on, the motor is a
-  // constant force -fl sign) and which is clear of its stops has no active constraint in this
-  // step; ODE's step of it reduces to v1 = v0 + h (F + lambda) / m, which is done here in closed
-  // form (docs/plant.md, "Performance"). Bodies that may stick, are held, or touch a stop are
-  // stepped by ODE; the others are disabled for that step so ODE skips their islands.
+  // Which bodies ODE steps. Clear of its stops, a body's only constraint in a step is its
+  // friction motor, one row decoupled from the joint's others, whose LCP has a closed-form
+  // solution: the motor force that would bring the body to rest within the step, clamped to the
+  // friction limit. Held (not clamped): the body stays at rest, v1 = 0 - a resting body, which ODE
+  // need not step. Clamped: the body slides on under the constant force -limit sign(v), and ODE's
+  // step reduces to v1 = v0 + h (F + lambda) / m. Both are done here; cases within a margin of the
+  // limit, and bodies on or at a stop (limit rows, the motor's behaviour there), are ODE's. Bodies
+  // not stepped by ODE are disabled for that step so that it skips their islands
+  // (docs/plant.md, "Coupling to ODE").
   bool any_in_ode = false;
   for (std::size_t i = 0; i < dofs_.size(); ++i) {
     Dof& d = *dofs_[i];
     const double limit = friction_limit[i];
-    // The motor force that would bring the body to rest within the step; the motor saturates when
-    // it exceeds the limit (with a margin, so the borderline cases are ODE's).
     const double stop_force = -d.mass * d.velocity / h - force[i];
     // ODE's own test of a slider's stops (at the start of the step).
     const bool clear = !d.slider || (dJointGetSliderPosition(d.joint) > d.lower && dJointGetSliderPosition(d.joint) < d.upper);
-    d.closed_form = clear && std::abs(stop_force) > limit * (1.0 + kSaturationMargin);
+    const bool slides = std::abs(stop_force) > limit * (1.0 + kSaturationMargin);
+    const bool holds = std::abs(stop_force) < limit * (1.0 - kSaturationMargin);
+    d.closed_form = clear && (slides || holds);
     if (d.closed_form) {
-      d.motor_force = stop_force > 0.0 ? limit : -limit;
+      d.resting = holds;
+      d.motor_force = holds ? stop_force : stop_force > 0.0 ? limit : -limit;
       if (d.enabled) {
         dBodyDisable(d.body);
         d.enabled = false;
@@ -189,7 +196,7 @@ void RigidBodyWorld::step(double h, const std::vector<double>& force, const std:
     if (d.slider) {
       double x;
       if (d.closed_form) {
-        d.velocity = v0 + h * (force[i] + d.motor_force) / d.mass;
+        d.velocity = d.resting ? 0.0 : v0 + h * (force[i] + d.motor_force) / d.mass;
         const dReal* lv = dBodyGetLinearVel(d.body);
         dBodySetLinearVel(d.body, d.velocity, lv[1], lv[2]);
         // Trapezoidal position, as below for ODE's steps.
@@ -227,7 +234,7 @@ void RigidBodyWorld::step(double h, const std::vector<double>& force, const std:
     } else {
       double turn;  // the step's rotation about the axis, trapezoidal as for sliders
       if (d.closed_form) {
-        d.velocity = v0 + h * (force[i] + d.motor_force) / d.mass;
+        d.velocity = d.resting ? 0.0 : v0 + h * (force[i] + d.motor_force) / d.mass;
         dBodySetAngularVel(d.body, 0, 0, d.velocity);
         turn = 0.5 * h * (v0 + d.velocity);
         d.friction_loss = -d.motor_force * d.velocity * h;

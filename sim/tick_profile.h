@@ -23,6 +23,25 @@ struct TickProfile {
   /// Set it before the run starts, from the thread that runs it.
   inline static TickProfile* active = nullptr;
 
+  /// Monotonic ns one probe adds to the run it measures (two clock reads and the bookkeeping),
+  /// measured on a scratch profile; a benchmark subtracts calls * overhead from its figures.
+  static double probe_overhead_ns();
+  /// A profiled run's `ns` less the probes' own time (each probe's overhead counts in full in the
+  /// run, half inside the part it measures).
+  double run_ns_without_probes(std::int64_t ns, double overhead) const {
+    std::uint64_t n = 0;
+    for (auto c : calls) n += c;
+    return static_cast<double>(ns) - static_cast<double>(n) * overhead;
+  }
+  /// A part's time less the probes' own; the ODE probe sits inside the plant's, so its overhead
+  /// is taken from the plant's part in full.
+  double part_ns(TickPart part, double overhead) const {
+    const auto i = static_cast<std::size_t>(part);
+    double own = static_cast<double>(ns[i]) - 0.5 * static_cast<double>(calls[i]) * overhead;
+    if (part == TickPart::Plant) own -= static_cast<double>(calls[static_cast<std::size_t>(TickPart::Ode)]) * overhead;
+    return own;
+  }
+
   static std::int64_t now_ns() {
     timespec ts{};
     ::clock_gettime(CLOCK_MONOTONIC, &ts);
@@ -53,5 +72,19 @@ class TickProbe {
   std::size_t part_ = 0;
   std::int64_t start_ = 0;
 };
+
+inline double TickProfile::probe_overhead_ns() {
+  TickProfile scratch;
+  TickProfile* const saved = active;
+  active = &scratch;
+  constexpr int kProbes = 20000;
+  const std::int64_t t0 = now_ns();
+  for (int i = 0; i < kProbes; ++i) {
+    const TickProbe probe(TickPart::Bus);
+  }
+  const std::int64_t t1 = now_ns();
+  active = saved;
+  return static_cast<double>(t1 - t0) / kProbes;
+}
 
 }  // namespace sim
