@@ -4,7 +4,9 @@
 // and the frames per second of simulated time. A second run with the tick profile on
 // (sim/tick_profile.h) gives the split between plant, ODE, nodes and bus delivery, scaled to the
 // first run's CPU time per tick.
-//   scenario_bench [SCENARIO] [--duration S]     (default: scenarios/reference-plant.yaml, 20 s)
+//   scenario_bench [SCENARIO] [--duration S] [--no-split]
+//   (default: scenarios/reference-plant.yaml, 20 s; --no-split: one run, no profiled run, e.g.
+//   under callgrind)
 #include <chrono>
 #include <ctime>
 #include <cstdio>
@@ -30,8 +32,10 @@ double cpu_seconds() {
 int main(int argc, char** argv) {
   std::string path = VPLANT_SOURCE_DIR "/scenarios/reference-plant.yaml";
   double duration = 20;
+  bool split = true;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--duration") && i + 1 < argc) duration = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--no-split")) split = false;
     else path = argv[i];
   }
   std::ifstream in(path);
@@ -68,6 +72,10 @@ int main(int argc, char** argv) {
                 s.name.c_str(), sum.simulated_s, wall, sum.simulated_s / wall, cpu, sum.simulated_s / cpu,
                 frames / sum.simulated_s, tick_ns, sum.assertions - sum.failures, sum.assertions, rc);
 
+    if (!split) {
+      std::fclose(sink);
+      return 0;
+    }
     // The split: the same run again with the probes on.
     scenario::Runner profiled(quiet, scenario::default_environment(), o);
     const double overhead = sim::TickProfile::probe_overhead_ns();
