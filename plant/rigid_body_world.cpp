@@ -152,7 +152,7 @@ void RigidBodyWorld::step(double h, const std::vector<double>& force, const std:
   // step reduces to v1 = v0 + h (F + lambda) / m. Both are done here; cases within a margin of the
   // limit, and bodies on or at a stop (limit rows, the motor's behaviour there), are ODE's. Bodies
   // not stepped by ODE are disabled for that step so that it skips their islands
-  // (docs/plant.md, "Coupling to ODE").
+  // (docs/plant.md, "Which bodies ODE steps").
   bool any_in_ode = false;
   for (std::size_t i = 0; i < dofs_.size(); ++i) {
     Dof& d = *dofs_[i];
