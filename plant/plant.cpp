@@ -99,6 +99,7 @@ Plant::Plant(const PlantDescription& description) : max_step_(description.solver
     }
   }
   solver_->refresh();
+  world_->reserve_step_memory();
 
   for (auto& c : components_) {
     const auto& signals = c->type().signals;

@@ -142,6 +142,20 @@ double RigidBodyWorld::velocity(DofId dof) const { return at(dof).velocity; }
 double RigidBodyWorld::friction_loss(DofId dof) const { return at(dof).friction_loss; }
 double RigidBodyWorld::impact_loss(DofId dof) const { return at(dof).impact_loss; }
 
+// ODE sizes its step memory at the first dWorldStep from the bodies and joints taking part (their
+// largest row counts) and grows it when more take part. Bodies join ODE's steps only while a
+// constraint acts, so that first step could come at any tick: one step of every body now, at rest
+// and without force (nothing moves), sizes it for all of them before the first tick.
+void RigidBodyWorld::reserve_step_memory() {
+  for (auto& d : dofs_) {
+    if (!d->enabled) {
+      dBodyEnable(d->body);
+      d->enabled = true;
+    }
+  }
+  if (!dofs_.empty()) dWorldStep(world_, 1e-9);
+}
+
 void RigidBodyWorld::step(double h, const std::vector<double>& force, const std::vector<double>& friction_limit) {
   const sim::TickProbe probe(sim::TickPart::Ode);
   // Which bodies ODE steps. Clear of its stops, a body's only constraint in a step is its

@@ -35,6 +35,10 @@ class RigidBodyWorld {
   double lower(DofId dof) const;
   double upper(DofId dof) const;
 
+  /// Sizes ODE's step memory for all bodies, so that no step allocates (once, after the bodies are
+  /// added; bodies at rest stay where they are).
+  void reserve_step_memory();
+
   /// One step of length h: force[i] (N or N m) along each body's axis; friction_limit[i] >= 0 is
   /// the dry friction the body's joint motor may apply to hold it at rest or brake it.
   void step(double h, const std::vector<double>& force, const std::vector<double>& friction_limit);
