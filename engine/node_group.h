@@ -6,6 +6,7 @@
 
 #include "devices/canopen/node.h"
 #include "sim/scheduler.h"
+#include "sim/tick_profile.h"
 #include "engine/world.h"
 
 namespace scenario {
@@ -16,6 +17,7 @@ class NodeGroup final : public sim::Steppable {
     for (auto& n : world.nodes()) nodes_.push_back(&n.device->node());
   }
   void step(sim::Time now, sim::Duration dt) override {
+    const sim::TickProbe probe(sim::TickPart::Nodes);
     for (auto* n : nodes_) n->step(now, dt);
   }
 

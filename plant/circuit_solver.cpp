@@ -205,7 +205,7 @@ void CircuitSolver::advance(double h, int depth) {
   for (int b = 0; b < nv_; ++b)
     if (held_[static_cast<std::size_t>(b)]) pin(np_ + b);
   lu_.compute(w_);
-  k1_.noalias() = lu_.solve(f_);
+  lu_.solve(f_, k1_);
 
   stage_.pressure = state_.pressure;
   stage_.position = state_.position;
@@ -227,7 +227,7 @@ void CircuitSolver::advance(double h, int depth) {
     f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
   }
   f_ -= 2.0 * k1_;
-  k2_.noalias() = lu_.solve(f_);
+  lu_.solve(f_, k2_);
   y_ = (1.5 * h) * k1_ + (0.5 * h) * k2_;  // increment over the step
 
   if (depth < kMaxHalvings && error_norm(h) > 1.0) {

@@ -28,6 +28,7 @@
 #include "plant/circuit_state.h"
 #include "plant/energy_ledger.h"
 #include "plant/equations.h"
+#include "plant/small_lu.h"
 
 namespace plant {
 
@@ -92,7 +93,7 @@ class CircuitSolver {
 
   Eigen::VectorXd r_, r0_, f_, k1_, k2_, y_, scale_;
   Eigen::MatrixXd g_, j_, w_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  SmallLu lu_;
 
   std::uint64_t steps_taken_ = 0;
   bool accounting_ = false;

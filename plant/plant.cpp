@@ -9,6 +9,7 @@
 #include "plant/component.h"
 #include "plant/fluid.h"
 #include "plant/rigid_body_world.h"
+#include "sim/tick_profile.h"
 
 namespace plant {
 namespace {
@@ -98,6 +99,7 @@ Plant::Plant(const PlantDescription& description) : max_step_(description.solver
     }
   }
   solver_->refresh();
+  world_->reserve_step_memory();
 
   for (auto& c : components_) {
     const auto& signals = c->type().signals;
@@ -114,6 +116,7 @@ Plant::~Plant() = default;
 
 void Plant::step(sim::Time /*now*/, sim::Duration dt) {
   if (dt.count() <= 0) return;
+  const sim::TickProbe probe(sim::TickPart::Plant);
   const double tick = sim::seconds(dt);
   if (dt != configured_for_) {
     substeps_ = std::max(1, static_cast<int>(std::ceil(tick / max_step_ - 1e-9)));
@@ -159,6 +162,7 @@ std::optional<double> Plant::parameter(std::string_view qualified_name) const {
 }
 
 std::uint64_t Plant::physics_steps() const { return solver_->steps_taken(); }
+std::uint64_t Plant::ode_steps() const { return world_->ode_steps(); }
 
 void Plant::set_energy_accounting(bool on) { solver_->set_energy_accounting(on); }
 const EnergyLedger& Plant::energy() const { return solver_->energy(); }

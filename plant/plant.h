@@ -53,6 +53,8 @@ class Plant final : public sim::Steppable {
   double physics_step() const { return h_; }  ///< s, nominal, of the last tick
   /// Physics steps since construction, including those the error control split into halves.
   std::uint64_t physics_steps() const;
+  /// Physics steps in which ODE stepped a body (one stuck, held or on a stop; rigid_body_world.h).
+  std::uint64_t ode_steps() const;
 
  private:
   Component* find(std::string_view name) const;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "sim/tick_profile.h"
+
 namespace plant {
 namespace {
 
@@ -22,6 +24,11 @@ void ensure_ode_initialised() {
 // stop, so ODE's limit is active (position <= stop) at the next step and holds the body there.
 constexpr double kStopInset = 1e-12;
 
+// A friction motor counts as saturated (the body slides on) when the force needed to stop the body
+// within the step exceeds its limit by this fraction, and as holding when it stays below it by
+// this fraction; the cases between are left to ODE's LCP.
+constexpr double kSaturationMargin = 1e-9;
+
 }  // namespace
 
 struct RigidBodyWorld::Dof {
@@ -37,6 +44,10 @@ struct RigidBodyWorld::Dof {
   double velocity = 0.0;
   double friction_loss = 0.0;
   double impact_loss = 0.0;
+  bool enabled = true;       // the ODE body takes part in dWorldStep
+  bool closed_form = false;  // this step: integrated in closed form, not by ODE
+  bool resting = false;      // closed form: held at rest by its friction motor
+  double motor_force = 0.0;  // closed form: the saturated friction motor's force on the body
 };
 
 RigidBodyWorld::RigidBodyWorld() {
@@ -131,38 +142,100 @@ double RigidBodyWorld::velocity(DofId dof) const { return at(dof).velocity; }
 double RigidBodyWorld::friction_loss(DofId dof) const { return at(dof).friction_loss; }
 double RigidBodyWorld::impact_loss(DofId dof) const { return at(dof).impact_loss; }
 
+// ODE sizes its step memory at the first dWorldStep from the bodies and joints taking part (their
+// largest row counts) and grows it when more take part. Bodies join ODE's steps only while a
+// constraint acts, so that first step could come at any tick: one step of every body now, at rest
+// and without force (nothing moves), sizes it for all of them before the first tick.
+void RigidBodyWorld::reserve_step_memory() {
+  for (auto& d : dofs_) {
+    if (!d->enabled) {
+      dBodyEnable(d->body);
+      d->enabled = true;
+    }
+  }
+  if (!dofs_.empty()) dWorldStep(world_, 1e-9);
+}
+
 void RigidBodyWorld::step(double h, const std::vector<double>& force, const std::vector<double>& friction_limit) {
+  const sim::TickProbe probe(sim::TickPart::Ode);
+  // Which bodies ODE steps. Clear of its stops, a body's only constraint in a step is its
+  // friction motor, one row decoupled from the joint's others, whose LCP has a closed-form
+  // solution: the motor force that would bring the body to rest within the step, clamped to the
+  // friction limit. Held (not clamped): the body stays at rest, v1 = 0 - a resting body, which ODE
+  // need not step. Clamped: the body slides on under the constant force -limit sign(v), and ODE's
+  // step reduces to v1 = v0 + h (F + lambda) / m. Both are done here; cases within a margin of the
+  // limit, and bodies on or at a stop (limit rows, the motor's behaviour there), are ODE's. Bodies
+  // not stepped by ODE are disabled for that step so that it skips their islands
+  // (docs/plant.md, "Which bodies ODE steps").
+  bool any_in_ode = false;
   for (std::size_t i = 0; i < dofs_.size(); ++i) {
     Dof& d = *dofs_[i];
+    const double limit = friction_limit[i];
+    const double stop_force = -d.mass * d.velocity / h - force[i];
+    // ODE's own test of a slider's stops (at the start of the step).
+    const bool clear = !d.slider || (dJointGetSliderPosition(d.joint) > d.lower && dJointGetSliderPosition(d.joint) < d.upper);
+    const bool slides = std::abs(stop_force) > limit * (1.0 + kSaturationMargin);
+    const bool holds = std::abs(stop_force) < limit * (1.0 - kSaturationMargin);
+    d.closed_form = clear && (slides || holds);
+    if (d.closed_form) {
+      d.resting = holds;
+      d.motor_force = holds ? stop_force : stop_force > 0.0 ? limit : -limit;
+      if (d.enabled) {
+        dBodyDisable(d.body);
+        d.enabled = false;
+      }
+      continue;
+    }
+    if (!d.enabled) {
+      dBodyEnable(d.body);
+      d.enabled = true;
+    }
+    any_in_ode = true;
     if (d.slider) {
-      dJointSetSliderParam(d.joint, dParamFMax, friction_limit[i]);
+      dJointSetSliderParam(d.joint, dParamFMax, limit);
       dBodyAddForce(d.body, force[i], 0, 0);
     } else {
-      dJointSetHingeParam(d.joint, dParamFMax, friction_limit[i]);
+      dJointSetHingeParam(d.joint, dParamFMax, limit);
       dBodyAddTorque(d.body, 0, 0, force[i]);
     }
   }
-  dWorldStep(world_, h);
-  for (auto& dp : dofs_) {
-    Dof& d = *dp;
+  if (any_in_ode) {
+    dWorldStep(world_, h);
+    ++ode_steps_;
+  }
+  for (std::size_t i = 0; i < dofs_.size(); ++i) {
+    Dof& d = *dofs_[i];
     d.impact_loss = 0.0;
     const double v0 = d.velocity;
     if (d.slider) {
-      d.velocity = dJointGetSliderPositionRate(d.joint);
-      // ODE advances positions with the end-of-step velocity (x += h v1, first order); move the
-      // body back by h/2 (v1 - v0) so the position follows the trapezoidal rule, x += h (v0+v1)/2,
-      // matching the second-order velocities of the circuit solver.
-      const dReal* p = dBodyGetPosition(d.body);
-      dBodySetPosition(d.body, p[0] - 0.5 * h * (d.velocity - v0), p[1], p[2]);
-      double x = dJointGetSliderPosition(d.joint);
-      // Joint force on the body along the axis (motor + stop) times the step's displacement.
-      d.friction_loss = -d.feedback.f1[0] * d.velocity * h;
+      double x;
+      if (d.closed_form) {
+        d.velocity = d.resting ? 0.0 : v0 + h * (force[i] + d.motor_force) / d.mass;
+        const dReal* lv = dBodyGetLinearVel(d.body);
+        dBodySetLinearVel(d.body, d.velocity, lv[1], lv[2]);
+        // Trapezoidal position, as below for ODE's steps.
+        const double x0 = dJointGetSliderPosition(d.joint);
+        const dReal* p = dBodyGetPosition(d.body);
+        dBodySetPosition(d.body, p[0] + 0.5 * h * (v0 + d.velocity), p[1], p[2]);
+        x = x0 + 0.5 * h * (v0 + d.velocity);
+        d.friction_loss = -d.motor_force * d.velocity * h;
+      } else {
+        d.velocity = dJointGetSliderPositionRate(d.joint);
+        // ODE advances positions with the end-of-step velocity (x += h v1, first order); move the
+        // body back by h/2 (v1 - v0) so the position follows the trapezoidal rule, x += h (v0+v1)/2,
+        // matching the second-order velocities of the circuit solver.
+        const dReal* p = dBodyGetPosition(d.body);
+        dBodySetPosition(d.body, p[0] - 0.5 * h * (d.velocity - v0), p[1], p[2]);
+        x = dJointGetSliderPosition(d.joint);
+        // Joint force on the body along the axis (motor + stop) times the step's displacement.
+        d.friction_loss = -d.feedback.f1[0] * d.velocity * h;
+      }
       // ODE engages a stop only from the step after the body reached it: project the overshoot
       // out and end the motion into the stop (an inelastic impact).
       const bool below = x < d.lower, above = x > d.upper;
       if (below || above) {
         const double stop = below ? d.lower - kStopInset : d.upper + kStopInset;
-        p = dBodyGetPosition(d.body);
+        const dReal* p = dBodyGetPosition(d.body);
         dBodySetPosition(d.body, p[0] + (stop - x), p[1], p[2]);
         if ((below && d.velocity < 0.0) || (above && d.velocity > 0.0)) {
           d.impact_loss = 0.5 * d.mass * d.velocity * d.velocity;
@@ -173,16 +246,25 @@ void RigidBodyWorld::step(double h, const std::vector<double>& force, const std:
       }
       d.position = std::fmin(std::fmax(x, d.lower), d.upper);
     } else {
-      d.velocity = dJointGetHingeAngleRate(d.joint);
-      // Trapezoidal angle, as for sliders: turn back by h/2 (w1 - w0) about the axis.
-      dQuaternion back, q;
-      dQFromAxisAndAngle(back, 0, 0, 1, -0.5 * h * (d.velocity - v0));
-      dQMultiply0(q, back, dBodyGetQuaternion(d.body));
+      double turn;  // the step's rotation about the axis, trapezoidal as for sliders
+      if (d.closed_form) {
+        d.velocity = d.resting ? 0.0 : v0 + h * (force[i] + d.motor_force) / d.mass;
+        dBodySetAngularVel(d.body, 0, 0, d.velocity);
+        turn = 0.5 * h * (v0 + d.velocity);
+        d.friction_loss = -d.motor_force * d.velocity * h;
+      } else {
+        d.velocity = dJointGetHingeAngleRate(d.joint);
+        // ODE turned the body by h w1: turn back by h/2 (w1 - w0) about the axis.
+        turn = -0.5 * h * (d.velocity - v0);
+        d.friction_loss = -d.feedback.t1[2] * d.velocity * h;
+      }
+      dQuaternion dq, q;
+      dQFromAxisAndAngle(dq, 0, 0, 1, turn);
+      dQMultiply0(q, dq, dBodyGetQuaternion(d.body));
       dBodySetQuaternion(d.body, q);
       const double raw = dJointGetHingeAngle(d.joint);
       d.position += std::remainder(raw - d.raw_angle, 2.0 * std::numbers::pi);
       d.raw_angle = raw;
-      d.friction_loss = -d.feedback.t1[2] * d.velocity * h;
     }
   }
 }

@@ -5,6 +5,7 @@
 // speed 0), which gives exact stiction: a body stays at rest until the force exceeds the limit.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -34,6 +35,10 @@ class RigidBodyWorld {
   double lower(DofId dof) const;
   double upper(DofId dof) const;
 
+  /// Sizes ODE's step memory for all bodies, so that no step allocates (once, after the bodies are
+  /// added; bodies at rest stay where they are).
+  void reserve_step_memory();
+
   /// One step of length h: force[i] (N or N m) along each body's axis; friction_limit[i] >= 0 is
   /// the dry friction the body's joint motor may apply to hold it at rest or brake it.
   void step(double h, const std::vector<double>& force, const std::vector<double>& friction_limit);
@@ -44,6 +49,8 @@ class RigidBodyWorld {
   double friction_loss(DofId dof) const;
   /// Kinetic energy lost in the last step by an inelastic impact on an end stop (J).
   double impact_loss(DofId dof) const;
+  /// Steps in which ODE stepped at least one body (the others were sliding freely).
+  std::uint64_t ode_steps() const { return ode_steps_; }
 
  private:
   struct Dof;
@@ -51,6 +58,7 @@ class RigidBodyWorld {
 
   dxWorld* world_;
   std::vector<std::unique_ptr<Dof>> dofs_;
+  std::uint64_t ode_steps_ = 0;
 };
 
 }  // namespace plant

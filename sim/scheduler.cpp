@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <limits>
 
+#include "sim/tick_profile.h"
+
 namespace sim {
 
 Scheduler::Scheduler(Duration tick, ClockMode mode) : tick_(tick), mode_(mode) {
@@ -21,6 +23,7 @@ std::int64_t Scheduler::monotonic_ns() const {
 }
 
 void Scheduler::deliver_all() {
+  const TickProbe probe(TickPart::Bus);
   // Deliver until quiet across buses: a gateway-like component may forward between buses.
   for (int round = 0; round < 8; ++round) {
     std::size_t n = 0;

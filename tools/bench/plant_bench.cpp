@@ -4,6 +4,10 @@
 // stroking the cylinder back and forth, the motor valve running the motor up and down), so the
 // bodies move and the valves meter throughout.
 //
+// Figures are per CPU second of this process (CLOCK_PROCESS_CPUTIME_ID), so a loaded machine
+// changes them less than wall time. The split between the hydraulics and ODE comes from a second
+// run with the tick profile on (sim/tick_profile.h), scaled to the first run's CPU time.
+//
 // Usage: plant_bench [simulated_seconds]   (default 20)
 #include <fmt/format.h>
 
@@ -16,6 +20,7 @@
 #include "plant/plant.h"
 #include "plant/reference_plant.h"
 #include "plant/rigid_body_world.h"
+#include "sim/tick_profile.h"
 
 namespace {
 
@@ -29,6 +34,7 @@ struct Figures {
   double wall;
   double cpu;
   std::uint64_t steps;
+  std::uint64_t ode_steps;
 };
 
 Figures run(double max_step, double seconds) {
@@ -57,12 +63,18 @@ Figures run(double max_step, double seconds) {
   }
   const double cpu = cpu_seconds() - cpu0;
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
-  return {wall, cpu, p.physics_steps()};
+  return {wall, cpu, p.physics_steps(), p.ode_steps()};
 }
 
-// The floor: ODE alone stepping the reference plant's two jointed bodies (slider with stops and
-// friction motor, hinge with friction motor) under a changing force, one dWorldStep per step.
-double ode_step_ns(long steps) {
+// The rigid bodies alone: the reference plant's two bodies (slider with stops and friction motor,
+// hinge with friction motor) under a changing force, one RigidBodyWorld::step per step (ODE steps
+// a body when a constraint may act: here while the slider rests on a stop).
+struct BodyFigures {
+  double ns_per_step;
+  double ode_share;
+};
+
+BodyFigures rigid_body_step(long steps) {
   plant::RigidBodyWorld world;
   const plant::DofId rod = world.add_slider(0.0, 0.5, 0.25);
   const plant::DofId shaft = world.add_hinge(0.0);
@@ -75,7 +87,8 @@ double ode_step_ns(long steps) {
     force[1] = 20.0;
     world.step(1e-3, force, limit);
   }
-  return (cpu_seconds() - cpu0) / static_cast<double>(steps) * 1e9;
+  return {(cpu_seconds() - cpu0) / static_cast<double>(steps) * 1e9,
+          static_cast<double>(world.ode_steps()) / static_cast<double>(steps)};
 }
 
 }  // namespace
@@ -83,14 +96,32 @@ double ode_step_ns(long steps) {
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::atof(argv[1]) : 20.0;
   fmt::print("reference plant alone, 1 ms ticks, {} s simulated per run\n", seconds);
-  fmt::print("{:>10} {:>14} {:>14} {:>14} {:>16}\n", "max_step", "sim s/wall s", "sim s/CPU s", "ns/tick (CPU)",
-             "ns/physics step");
+  fmt::print("{:>10} {:>14} {:>14} {:>14} {:>16} {:>11}\n", "max_step", "sim s/wall s", "sim s/CPU s", "ns/tick (CPU)",
+             "ns/physics step", "ODE steps");
   for (double max_step : {1e-3, 5e-4, 2.5e-4}) {
     const Figures f = run(max_step, seconds);
-    fmt::print("{:>8.2f}ms {:>14.0f} {:>14.0f} {:>14.0f} {:>16.0f}\n", max_step * 1e3, seconds / f.wall, seconds / f.cpu,
-               f.cpu / (seconds * 1000.0) * 1e9, f.cpu / static_cast<double>(f.steps) * 1e9);
+    fmt::print("{:>8.2f}ms {:>14.0f} {:>14.0f} {:>14.0f} {:>16.0f} {:>10.1f}%\n", max_step * 1e3, seconds / f.wall,
+               seconds / f.cpu, f.cpu / (seconds * 1000.0) * 1e9, f.cpu / static_cast<double>(f.steps) * 1e9,
+               100.0 * static_cast<double>(f.ode_steps) / static_cast<double>(f.steps));
   }
-  fmt::print("ODE alone (the two bodies, one dWorldStep per physics step): {:.0f} ns per step\n",
-             ode_step_ns(static_cast<long>(seconds * 1000.0)));
+  // The split at the default step: a second run with the probes on.
+  const Figures plain = run(1e-3, seconds);
+  const double overhead = sim::TickProfile::probe_overhead_ns();
+  sim::TickProfile profile;
+  sim::TickProfile::active = &profile;
+  const std::int64_t t0 = sim::TickProfile::now_ns();
+  run(1e-3, seconds);
+  const double total = profile.run_ns_without_probes(sim::TickProfile::now_ns() - t0, overhead);
+  sim::TickProfile::active = nullptr;
+  const double tick_ns = plain.cpu / (seconds * 1000.0) * 1e9;
+  auto share = [&](sim::TickPart part) { return profile.part_ns(part, overhead) / total; };
+  const double ode = share(sim::TickPart::Ode), plant = share(sim::TickPart::Plant) - ode;
+  fmt::print("split at 1 ms ({:.0f} ns/tick CPU): hydraulics and plant {:.0f} ns ({:.0f} %), ODE {:.0f} ns ({:.0f} %), "
+             "bench loop {:.0f} ns\n",
+             tick_ns, plant * tick_ns, 100 * plant, ode * tick_ns, 100 * ode, (1 - plant - ode) * tick_ns);
+  const BodyFigures bodies = rigid_body_step(static_cast<long>(seconds * 1000.0));
+  fmt::print("rigid bodies alone (the two bodies, one RigidBodyWorld::step per physics step): {:.0f} ns per step, "
+             "ODE stepped in {:.0f} % of them\n",
+             bodies.ns_per_step, 100 * bodies.ode_share);
   return 0;
 }
