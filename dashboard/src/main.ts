@@ -34,6 +34,9 @@ async function main(): Promise<void> {
 
   const live = new Map<string, NodeInfo>();
   const nmtLast = new Map<string, { from: string; to: string }>();
+  // The device state seen before the latest change: one control word can walk several transitions
+  // between two updates (0x0007 from INIT: TR_2, TR_3, TR_4), and the diagram marks them all.
+  const deviceLast = new Map<string, { from: string; to: string }>();
   let selected: string | null = sc.nodes.find((n) => n.profile === 'dsp408')?.name ?? sc.nodes[0]?.name ?? null;
   let odNode: string | null = null;
 
@@ -91,7 +94,8 @@ async function main(): Promise<void> {
 
   function renderNodes(): void {
     renderNodeTable($('node-table'), sc.nodes, live, selected, select);
-    renderNodeDetail($('node-detail'), selected ? live.get(selected) : undefined, selected ? nmtLast.get(selected) ?? null : null);
+    renderNodeDetail($('node-detail'), selected ? live.get(selected) : undefined,
+      selected ? nmtLast.get(selected) ?? null : null, selected ? deviceLast.get(selected) ?? null : null);
   }
 
   function select(name: string): void {
@@ -107,6 +111,9 @@ async function main(): Promise<void> {
     for (const n of nodes) {
       const before = live.get(n.name);
       if (before && before.nmt !== n.nmt) nmtLast.set(n.name, { from: before.nmt, to: n.nmt });
+      if (before?.device.profile === 'dsp408' && n.device.profile === 'dsp408' && before.device.state !== n.device.state) {
+        deviceLast.set(n.name, { from: before.device.state, to: n.device.state });
+      }
       live.set(n.name, n);
     }
     renderNodes();

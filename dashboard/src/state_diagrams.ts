@@ -108,3 +108,14 @@ export function transitionPath(d: Diagram, from: string, to: string): DiagramEdg
   }
   return [];
 }
+
+/**
+ * The transition to mark: what the page saw (the state before the latest change → now) when it
+ * ends in the current state and the server's last transition is its last step, else the server's.
+ */
+export function markedTransition(
+  current: string, server: { from: string; to: string } | null, seen: { from: string; to: string } | null,
+): { from: string; to: string } | null {
+  if (seen && seen.to === current && (!server || server.to === current)) return seen;
+  return server;
+}

@@ -31,6 +31,8 @@ if (!vplant || !scenario || !screenshots) {
 
 const CHROMIUM = '/usr/bin/chromium';
 const WAIT_MS = 20_000;
+// Below ctest's TIMEOUT: a hung run still kills the server it started instead of leaving it behind.
+const WATCHDOG_MS = 150_000;
 
 let server: ChildProcess | undefined;
 let serverLog = '';
@@ -80,6 +82,17 @@ async function shot(name: string): Promise<void> {
 }
 
 const byTestId = (id: string) => page.getByTestId(id);
+
+function killServer(): void {
+  if (server && server.exitCode === null && server.signalCode === null) server.kill('SIGKILL');
+}
+process.on('exit', killServer);
+for (const sig of ['SIGINT', 'SIGTERM'] as const) process.on(sig, () => { killServer(); process.exit(1); });
+setTimeout(() => {
+  console.error(`dashboard e2e: no end after ${WATCHDOG_MS / 1000} s; server log:\n${serverLog}`);
+  killServer();
+  process.exit(1);
+}, WATCHDOG_MS).unref();
 
 before(async () => {
   mkdirSync(screenshots!, { recursive: true });

@@ -1,6 +1,6 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { DSP408_DIAGRAM, NMT_DIAGRAM, transitionPath } from '../../dashboard/src/state_diagrams';
+import { DSP408_DIAGRAM, markedTransition, NMT_DIAGRAM, transitionPath } from '../../dashboard/src/state_diagrams';
 
 const labels = (from: string, to: string) => transitionPath(DSP408_DIAGRAM, from, to).map((e) => e.label);
 
@@ -46,4 +46,14 @@ test('no path, no edges; same state, no edges', () => {
 test('NMT: start from pre-operational, reset from anywhere', () => {
   assert.deepEqual(transitionPath(NMT_DIAGRAM, 'PRE-OPERATIONAL', 'OPERATIONAL').map((e) => e.label), ['start']);
   assert.deepEqual(transitionPath(NMT_DIAGRAM, 'STOPPED', 'INITIALISING').map((e) => e.label), ['reset']);
+});
+
+test('the page marks the chain it saw when the server names only its last step', () => {
+  const server = { from: 'HOLD', to: 'DEVICE_MODE_ACTIVE' };
+  const seen = { from: 'INIT', to: 'DEVICE_MODE_ACTIVE' };
+  assert.deepEqual(markedTransition('DEVICE_MODE_ACTIVE', server, seen), seen);
+  assert.deepEqual(markedTransition('DEVICE_MODE_ACTIVE', null, seen), seen);
+  // What the page saw is stale (the state moved on since): the server's transition counts.
+  assert.deepEqual(markedTransition('HOLD', { from: 'DEVICE_MODE_ACTIVE', to: 'HOLD' }, seen), { from: 'DEVICE_MODE_ACTIVE', to: 'HOLD' });
+  assert.equal(markedTransition('INIT', null, null), null);
 });

@@ -2,7 +2,7 @@
 // transition and the control word that caused it, control-word buttons, and the EMCY history.
 import { CW_PRESETS, describeControlWord } from '../control_word';
 import { button, el, formatTime, hex } from '../dom';
-import { DSP408_DIAGRAM, NMT_DIAGRAM } from '../state_diagrams';
+import { DSP408_DIAGRAM, markedTransition, NMT_DIAGRAM } from '../state_diagrams';
 import type { NodeInfo } from '../types';
 import { renderDiagram } from './diagram_view';
 
@@ -13,6 +13,7 @@ export interface NodeDetailActions {
 
 export function renderNodeDetail(
   host: HTMLElement, node: NodeInfo | undefined, nmtLast: { from: string; to: string } | null,
+  deviceSeen: { from: string; to: string } | null,
 ): void {
   if (!node) {
     host.replaceChildren(el('p', {}, 'Select a node in the table.'));
@@ -31,7 +32,7 @@ export function renderNodeDetail(
       ? `Last transition ${lt.from} → ${lt.to} at ${formatTime(lt.t_us)}, control word ${describeControlWord(lt.control_word)}`
       : 'No transition yet';
     parts.push(el('figure', { class: 'diagram-box' },
-      renderDiagram(DSP408_DIAGRAM, d.state, lt),
+      renderDiagram(DSP408_DIAGRAM, d.state, markedTransition(d.state, lt, deviceSeen)),
       el('figcaption', {},
         el('div', { 'data-testid': 'device-last-transition' }, caption),
         el('div', { 'data-testid': 'device-words' },
