@@ -129,6 +129,10 @@ test('the page shows the five nodes of the reference plant', async () => {
   assert.equal(await page.locator('[data-testid=node-table] tbody tr').count(), 5);
   for (const name of ['vtvpcd', 'dsv', 'md2', 'hlt', 'wdga']) await byTestId(`node-row-${name}`).waitFor();
   await page.waitForFunction(() => document.querySelector('[data-testid=connection]')?.textContent === 'live');
+  // With --ui, virtual time may start paused (the trainer starts it): start it from the page.
+  await page.waitForFunction(() => ['paused', 'running'].includes(document.querySelector('[data-testid=clock-state]')?.textContent ?? ''));
+  if ((await byTestId('clock-state').textContent()) === 'paused') await byTestId('clock-resume').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
   await page.waitForFunction(() => document.querySelector('[data-testid=nmt-dsv]')?.textContent === 'PRE-OPERATIONAL');
   assert.deepEqual(pageErrors, []);
   await shot('overview-preop');
