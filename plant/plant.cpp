@@ -158,6 +158,13 @@ std::optional<double> Plant::parameter(std::string_view qualified_name) const {
   return c->parameter(index);
 }
 
+std::vector<std::string> Plant::parameter_names() const {
+  std::vector<std::string> names;
+  for (const auto& c : components_)
+    for (const auto& p : c->type().parameters) names.push_back(c->name() + "." + std::string(p.name));
+  return names;
+}
+
 std::uint64_t Plant::physics_steps() const { return solver_->steps_taken(); }
 
 void Plant::set_energy_accounting(bool on) { solver_->set_energy_accounting(on); }
