@@ -36,7 +36,7 @@ export const api = {
     call<SdoResult>('GET', `/api/nodes/${encodeURIComponent(node)}/sdo?index=${index}&sub=${sub}`),
   nmt: (command: string, node: string | 0) => call<{ ok: boolean }>('POST', '/api/nmt', { command, node }),
   faults: () => call<ActiveFault[]>('GET', '/api/faults'),
-  injectFault: (fault: object) => call<{ ok: boolean; id: number }>('POST', '/api/faults', fault),
+  injectFault: (fault: object) => call<{ ok: boolean; id: number; active?: boolean }>('POST', '/api/faults', fault),
   clearFault: (id: number) => call<{ ok: boolean }>('DELETE', `/api/faults/${id}`),
   setInput: (node: string, name: string, value: number) =>
     call<{ ok: boolean }>('POST', `/api/nodes/${encodeURIComponent(node)}/inputs`, { name, value }),
@@ -49,7 +49,7 @@ export interface StreamHandlers {
   frames(batch: Frame[]): void;
   nodes(nodes: NodeInfo[]): void;
   signals(batch: SignalBatch): void;
-  clock(c: { t_us: number; paused: boolean }): void;
+  clock(c: { t_us: number; paused: boolean; end_reached?: boolean }): void;
   dropped(d: { frames: number }): void;
   connection(open: boolean): void;
 }

@@ -10,7 +10,8 @@ import { FaultsPanel } from './views/faults_panel';
 import { renderControlWordControls, renderNodeDetail } from './views/node_detail';
 import { renderNodeTable } from './views/node_table';
 import { OdBrowser } from './views/od_browser';
-import { defaultSignals, Plots } from './views/plots';
+import { defaultSignals } from './signal_choice';
+import { Plots } from './views/plots';
 import { TraceView } from './views/trace_view';
 
 const $ = (id: string) => document.getElementById(id) as HTMLElement;
@@ -132,7 +133,7 @@ async function main(): Promise<void> {
     try {
       await api.clockAction(action, ms);
       const c = await api.clock();
-      clockControls.show(c.t_us, c.paused);
+      clockControls.show(c.t_us, c.paused, c.end_reached ?? false);
     } catch (err) {
       message(errorText(err));
     }
@@ -142,7 +143,7 @@ async function main(): Promise<void> {
     inject: async (f) => {
       try {
         const r = await api.injectFault(f);
-        message(`fault #${r.id} injected`, true);
+        message(r.active === false ? 'done (nothing to clear)' : `fault #${r.id} injected`, true);
       } catch (err) {
         message(errorText(err));
       }
@@ -177,7 +178,7 @@ async function main(): Promise<void> {
 
   const trace = new TraceView($('trace'), sc.nodes);
   let stream: EventSource | null = null;
-  const plots = new Plots($('plots'), sc.signals, defaultSignals(sc.signals), (chosen) => {
+  const plots = new Plots($('plots'), sc.signals, defaultSignals(sc.signals, sc.nodes.map((n) => n.name)), (chosen) => {
     plots.choose(chosen);
     connect(chosen);
   });
@@ -188,7 +189,7 @@ async function main(): Promise<void> {
       frames: (batch) => trace.push(batch),
       nodes: updateNodes,
       signals: (b) => plots.append(b),
-      clock: (c) => clockControls.show(c.t_us, c.paused),
+      clock: (c) => clockControls.show(c.t_us, c.paused, c.end_reached ?? false),
       dropped: (d) => trace.noteStreamDropped(d.frames),
       connection: (open) => {
         const s = $('connection');
@@ -205,7 +206,7 @@ async function main(): Promise<void> {
     select(first);
   }
   await refreshFaults();
-  connect(defaultSignals(sc.signals));
+  connect(defaultSignals(sc.signals, sc.nodes.map((n) => n.name)));
   // Live values of the dictionary and the active faults: polled, they change rarely.
   setInterval(() => void refreshOd(), 1000);
   setInterval(() => void refreshFaults(), 2000);

@@ -49,7 +49,7 @@ export interface Scenario {
     power: string[];
     plant: string[];
   };
-  inputs: { node: string; name: string }[];
+  inputs: { node: string; name: string; unit?: string }[];
 }
 
 export interface OdEntry {
@@ -79,7 +79,10 @@ export interface Frame {
   candump: string;
 }
 
-export interface ClockState { mode: 'virtual' | 'realtime'; t_us: number; paused: boolean; tick_us: number }
+export interface ClockState {
+  mode: 'virtual' | 'realtime'; t_us: number; paused: boolean; tick_us: number;
+  speed?: number; end_reached?: boolean;
+}
 
 export interface ActiveFault { id: number; summary: string; since_t_us: number }
 

@@ -14,7 +14,7 @@ import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { after, before, test } from 'node:test';
-import { Browser, chromium, Page } from 'playwright-core';
+import { BrowserContext, chromium, Page } from 'playwright-core';
 
 function option(name: string): string | undefined {
   const i = process.argv.indexOf(name);
@@ -36,7 +36,7 @@ const WATCHDOG_MS = 150_000;
 
 let server: ChildProcess | undefined;
 let serverLog = '';
-let browser: Browser | undefined;
+let context: BrowserContext | undefined;
 let page: Page;
 let profileDir = '';
 const pageErrors: string[] = [];
@@ -75,13 +75,29 @@ function startServer(port: number): Promise<string> {
   });
 }
 
-async function shot(name: string): Promise<void> {
+/** A screenshot of the viewport with the section `anchor` at the top (or the top of the page). */
+async function shot(name: string, anchor?: string): Promise<void> {
+  await page.evaluate((id) => (id ? document.getElementById(id)?.scrollIntoView() : window.scrollTo(0, 0)), anchor);
+  await page.waitForTimeout(300);  // a plot redraw (5 per second) after the scroll
   const file = join(screenshots!, `${name}.png`);
   await page.screenshot({ path: file, fullPage: false });
   if (docsImages) copyFileSync(file, join(docsImages, `dashboard-${name}.png`));
 }
 
 const byTestId = (id: string) => page.getByTestId(id);
+
+// The reference plant lasts 6 s; with --ui the virtual clock pauses there (end_reached) and Resume
+// goes on. Like a trainer, the test resumes it whenever that happens, except in the clock test.
+let autoResume = true;
+const resumer = setInterval(() => {
+  if (!autoResume || !page) return;
+  page.evaluate(async () => {
+    const c = await (await fetch('/api/clock')).json();
+    if (c.paused && c.end_reached) {
+      await fetch('/api/clock', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{"action":"resume"}' });
+    }
+  }).catch(() => undefined);
+}, 250);
 
 function killServer(): void {
   if (server && server.exitCode === null && server.signalCode === null) server.kill('SIGKILL');
@@ -100,20 +116,23 @@ before(async () => {
   const port = await freePort();
   const url = await startServer(port);
   profileDir = mkdtempSync(join(tmpdir(), 'vplant-chromium-'));
-  browser = await chromium.launch({
+  // A fresh profile each run (playwright passes it as --user-data-dir).
+  context = await chromium.launchPersistentContext(profileDir, {
     executablePath: CHROMIUM,
     args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
-      '--disable-sync', '--no-first-run', `--user-data-dir=${profileDir}`],
+      '--disable-sync', '--no-first-run'],
+    viewport: { width: 1400, height: 1000 },
+    acceptDownloads: true,
   });
-  const context = await browser.newContext({ viewport: { width: 1400, height: 1000 }, acceptDownloads: true });
   context.setDefaultTimeout(WAIT_MS);
-  page = await context.newPage();
+  page = context.pages()[0] ?? await context.newPage();
   page.on('pageerror', (e) => pageErrors.push(e.message));
   await page.goto(url);
 });
 
 after(async () => {
-  await browser?.close();
+  clearInterval(resumer);
+  await context?.close();
   if (server && server.exitCode === null) {
     server.kill('SIGTERM');
     await new Promise<void>((resolve) => {
@@ -163,7 +182,7 @@ test('control word 0x0007 by SDO drives the DSV to DEVICE_MODE_ACTIVE', async ()
   // The SDO download and its response, decoded with the object's name.
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td.decoded')]
     .some((td) => /6040:00/.test(td.textContent ?? '') && /control ?word/i.test(td.textContent ?? '')));
-  await shot('dsv-active');
+  await shot('dsv-active', 'detail-section');
 });
 
 test('an SDO write the node refuses shows the abort code and its text', async () => {
@@ -204,7 +223,7 @@ test('the cylinder plot rises when the pump delivers and the DSV opens', async (
     return m !== null && Number(m[1]) > s + 0.05;
   }, start, { timeout: 30_000 });
   await byTestId('od-filter').fill('');
-  await shot('cylinder-rising');
+  await shot('cylinder-rising', 'plots-section');
 });
 
 test('"magnet lost" on the HLT 1100: the decoded EMCY, then the fault cleared', async () => {
@@ -218,6 +237,8 @@ test('"magnet lost" on the HLT 1100: the decoded EMCY, then the fault cleared', 
   assert.match(emcyText ?? '', /EMCY/);
   await page.waitForSelector('[data-testid=emcy-list] li');
   await shot('hlt-magnet-lost');
+  await byTestId('trace-service-EMCY').waitFor();
+  await shot('trace-emcy', 'trace-section');
   await page.locator('[data-testid^=fault-clear-]').first().click();
   await page.waitForFunction(() => document.querySelectorAll('[data-testid=active-faults] [data-testid^=active-fault-]').length === 0);
 });
@@ -244,6 +265,7 @@ test('the trace filters by node and service and exports what it shows as a candu
 });
 
 test('virtual time under the trainer: pause, one tick, run 100 ms, resume', async () => {
+  autoResume = false;
   const now = () => page.evaluate(async () => (await (await fetch('/api/clock')).json()) as { t_us: number; paused: boolean; tick_us: number });
   await byTestId('clock-pause').click();
   await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'paused');

@@ -21,6 +21,7 @@ export function renderNmtControls(host: HTMLElement, nodes: readonly ScenarioNod
 export class ClockControls {
   private time = el('span', { class: 'clock-time', 'data-testid': 'clock-time', role: 'timer', 'aria-live': 'off' });
   private state = el('span', { class: 'clock-state', 'data-testid': 'clock-state' });
+  private hint = el('span', { class: 'clock-hint', 'data-testid': 'clock-hint' });
   private buttons: HTMLButtonElement[] = [];
   private readonly mode: string;
 
@@ -35,16 +36,19 @@ export class ClockControls {
         button('Run', { 'data-testid': 'clock-run' }, () => act('run', Math.max(1, Math.floor(Number(runMs.value) || 1)))),
       ];
       host.replaceChildren(el('div', { class: 'clock', role: 'group', 'aria-label': 'Virtual clock' },
-        this.time, this.state, ...this.buttons.slice(0, 3), this.buttons[3], runMs, el('span', {}, ' ms')));
+        this.time, this.state, this.hint, ...this.buttons.slice(0, 3), this.buttons[3], runMs, el('span', {}, ' ms')));
     } else {
       host.replaceChildren(el('div', { class: 'clock', role: 'group', 'aria-label': 'Real-time clock' }, this.time, this.state));
     }
-    this.show(clock.t_us, clock.paused);
+    this.show(clock.t_us, clock.paused, clock.end_reached ?? false);
   }
 
-  show(t_us: number, paused: boolean): void {
+  /** `endReached`: the scenario's duration is over; virtual time paused there and Resume goes on. */
+  show(t_us: number, paused: boolean, endReached: boolean): void {
     this.time.textContent = formatTime(t_us);
     this.state.textContent = this.mode === 'realtime' ? 'real time' : paused ? 'paused' : 'running';
+    this.hint.textContent = endReached && paused ? '(end of the scenario\'s duration: Resume goes on)' : '';
     this.state.dataset.paused = String(paused);
+    this.state.dataset.endReached = String(endReached);
   }
 }

@@ -29,7 +29,7 @@ export class FaultsPanel {
         el('td', {}, button('Inject', { 'data-testid': `fault-inject-${f.node}-${f.name}`, 'aria-label': `Inject ${f.name} on ${f.node}` },
           () => actions.inject({ kind: 'device', node: f.node, fault: f.name })))));
     }
-    parts.push(devTable);
+    parts.push(el('div', { class: 'fault-scroll' }, devTable));
 
     const nodeNames = sc.nodes.map((n) => n.name);
     if (sc.faults.power.length) {
@@ -67,7 +67,7 @@ export class FaultsPanel {
       for (const i of sc.inputs) {
         const id = `${i.node}-${i.name}`;
         const value = el('input', { type: 'number', step: 'any', size: 6, value: '1', 'aria-label': `Value for ${i.node}.${i.name}`, 'data-testid': `input-value-${id}` });
-        inputs.append(el('tr', {}, el('td', {}, i.node), el('td', { class: 'mono' }, i.name), el('td', {}, value),
+        inputs.append(el('tr', {}, el('td', {}, i.node), el('td', { class: 'mono' }, i.name), el('td', {}, value, i.unit ? ` ${i.unit}` : ''),
           el('td', {}, button('Set', { 'data-testid': `input-set-${id}`, 'aria-label': `Set ${i.node}.${i.name}` }, () => {
             const v = Number(value.value);
             if (value.value.trim() === '' || !Number.isFinite(v)) actions.reportError(`${i.node}.${i.name}: give a number`);

@@ -2,23 +2,11 @@
 // metres, pascals, a fraction, rad/s), over a sliding window of simulated time.
 import uPlot from 'uplot';
 import { el } from '../dom';
+import { formatReading } from '../signal_choice';
 import { SignalSeries } from '../signal_series';
 import type { SignalBatch } from '../types';
 
 const WINDOW_US = 10_000_000;
-
-/** The signals shown by default: cylinder position, pressures, swivel angle, shaft speed. */
-export function defaultSignals(all: readonly string[]): string[] {
-  const pick = (re: RegExp, max: number) => all.filter((s) => re.test(s)).slice(0, max);
-  const chosen = [
-    ...pick(/cyl[a-z_]*\.position$/i, 1),
-    ...pick(/swivel_angle$/i, 1),
-    ...pick(/supply[a-z_]*\.pressure$|p_supply/i, 1),
-    ...pick(/cyl[a-z_]*\.pressure_[ab]$/i, 2),
-    ...pick(/shaft[a-z_]*\.speed$/i, 1),
-  ];
-  return [...new Set(chosen)];
-}
 
 export class Plots {
   private series: SignalSeries;
@@ -83,7 +71,7 @@ export class Plots {
       if (!c) return;
       c.plot.setData([data[0], data[i + 1]] as uPlot.AlignedData);
       const v = this.series.latest(name);
-      c.readout.textContent = v === undefined || Number.isNaN(v) ? '' : `= ${v.toPrecision(4)}`;
+      c.readout.textContent = v === undefined || Number.isNaN(v) ? '' : `= ${formatReading(v)}`;
     });
   }
 }
