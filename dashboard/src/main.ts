@@ -8,7 +8,7 @@ import type { NodeInfo, OdEntry, Scenario } from './types';
 import { ClockControls, renderNmtControls } from './views/controls';
 import { FaultsPanel } from './views/faults_panel';
 import { renderControlWordControls, renderNodeDetail } from './views/node_detail';
-import { renderNodeTable } from './views/node_table';
+import { NodeTable } from './views/node_table';
 import { OdBrowser } from './views/od_browser';
 import { defaultSignals } from './signal_choice';
 import { Plots } from './views/plots';
@@ -93,8 +93,9 @@ async function main(): Promise<void> {
     reportError: (m: string) => od.report(false, m),
   };
 
+  const nodeTable = new NodeTable($('node-table'), sc.nodes, (name) => select(name));
   function renderNodes(): void {
-    renderNodeTable($('node-table'), sc.nodes, live, selected, select);
+    nodeTable.update(live, selected);
     renderNodeDetail($('node-detail'), selected ? live.get(selected) : undefined,
       selected ? nmtLast.get(selected) ?? null : null, selected ? deviceLast.get(selected) ?? null : null);
   }

@@ -89,9 +89,10 @@ const byTestId = (id: string) => page.getByTestId(id);
 // The reference plant lasts 6 s; with --ui the virtual clock pauses there (end_reached) and Resume
 // goes on. Like a trainer, the test resumes it whenever that happens, except in the clock test.
 let autoResume = true;
+let resuming: Promise<unknown> = Promise.resolve();
 const resumer = setInterval(() => {
   if (!autoResume || !page) return;
-  page.evaluate(async () => {
+  resuming = page.evaluate(async () => {
     const c = await (await fetch('/api/clock')).json();
     if (c.paused && c.end_reached) {
       await fetch('/api/clock', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{"action":"resume"}' });
@@ -132,6 +133,11 @@ before(async () => {
 
 after(async () => {
   clearInterval(resumer);
+  // What the page showed last, for a failed run: its screenshot and its status line.
+  if (page) {
+    await page.screenshot({ path: join(screenshots!, 'final.png'), fullPage: true }).catch(() => undefined);
+    console.log(`page status line: ${await byTestId('messages').textContent().catch(() => '?')}`);
+  }
   await context?.close();
   if (server && server.exitCode === null) {
     server.kill('SIGTERM');
@@ -266,6 +272,7 @@ test('the trace filters by node and service and exports what it shows as a candu
 
 test('virtual time under the trainer: pause, one tick, run 100 ms, resume', async () => {
   autoResume = false;
+  await resuming;  // a resume already on its way must not undo the pause below
   const now = () => page.evaluate(async () => (await (await fetch('/api/clock')).json()) as { t_us: number; paused: boolean; tick_us: number });
   await byTestId('clock-pause').click();
   await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'paused');

@@ -74,7 +74,7 @@ export class FaultsPanel {
             else actions.setInput(i.node, i.name, v);
           }))));
       }
-      parts.push(inputs);
+      parts.push(el('div', { class: 'fault-scroll' }, inputs));
     }
     host.replaceChildren(...parts);
   }

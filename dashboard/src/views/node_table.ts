@@ -13,35 +13,49 @@ export function deviceSummary(n: NodeInfo): string {
   }
 }
 
-export function renderNodeTable(
-  host: HTMLElement, scenarioNodes: readonly ScenarioNode[], live: ReadonlyMap<string, NodeInfo>,
-  selected: string | null, onSelect: (name: string) => void,
-): void {
-  const body = el('tbody');
-  for (const s of scenarioNodes) {
-    const n = live.get(s.name);
-    const lastEmcy = n?.emcy.length ? n.emcy[n.emcy.length - 1] : null;
-    const row = el('tr', {
-      'data-testid': `node-row-${s.name}`,
-      class: s.name === selected ? 'selected' : undefined,
-      tabindex: 0,
-      'aria-selected': s.name === selected ? 'true' : 'false',
-    },
-      el('td', {}, el('strong', {}, s.name)),
-      el('td', {}, String(s.node_id)),
-      el('td', {}, `${s.product}${s.variant ? ' ' + s.variant : ''}`),
-      el('td', {}, s.bus),
-      el('td', { 'data-testid': `nmt-${s.name}`, class: `nmt nmt-${(n?.nmt ?? 'unknown').toLowerCase()}` }, n?.nmt ?? '?'),
-      el('td', { 'data-testid': `device-${s.name}` }, n ? deviceSummary(n) : '?'),
-      el('td', { 'data-testid': `errreg-${s.name}` }, n ? `0x${hex(n.error_register, 2)}` : '?'),
-      el('td', { 'data-testid': `emcy-${s.name}`, class: 'emcy' }, lastEmcy ? `${hex(lastEmcy.code, 4)}h ${lastEmcy.text}` : ''),
-    );
-    row.addEventListener('click', () => onSelect(s.name));
-    row.addEventListener('keydown', (ev) => { if (ev.key === 'Enter' || ev.key === ' ') onSelect(s.name); });
-    body.append(row);
+interface RowCells { row: HTMLTableRowElement; nmt: HTMLElement; device: HTMLElement; errreg: HTMLElement; emcy: HTMLElement }
+
+/** Rows are built once and updated in place, so a click never lands on a row being replaced. */
+export class NodeTable {
+  private rows = new Map<string, RowCells>();
+
+  constructor(host: HTMLElement, scenarioNodes: readonly ScenarioNode[], onSelect: (name: string) => void) {
+    const body = el('tbody');
+    for (const s of scenarioNodes) {
+      const cells = {
+        nmt: el('td', { 'data-testid': `nmt-${s.name}`, class: 'nmt' }, '?'),
+        device: el('td', { 'data-testid': `device-${s.name}` }, '?'),
+        errreg: el('td', { 'data-testid': `errreg-${s.name}` }, '?'),
+        emcy: el('td', { 'data-testid': `emcy-${s.name}`, class: 'emcy' }, ''),
+      };
+      const row = el('tr', { 'data-testid': `node-row-${s.name}`, tabindex: 0, 'aria-selected': 'false' },
+        el('td', {}, el('strong', {}, s.name)),
+        el('td', {}, String(s.node_id)),
+        el('td', {}, `${s.product}${s.variant ? ' ' + s.variant : ''}`),
+        el('td', {}, s.bus),
+        cells.nmt, cells.device, cells.errreg, cells.emcy);
+      row.addEventListener('click', () => onSelect(s.name));
+      row.addEventListener('keydown', (ev) => { if (ev.key === 'Enter' || ev.key === ' ') onSelect(s.name); });
+      body.append(row);
+      this.rows.set(s.name, { row, ...cells });
+    }
+    host.replaceChildren(el('table', { class: 'nodes', 'data-testid': 'node-table', 'aria-label': 'Nodes' },
+      el('thead', {}, el('tr', {}, ...['Node', 'ID', 'Product', 'Bus', 'NMT', 'Device state', 'Err. reg.', 'Last EMCY'].map((h) => el('th', { scope: 'col' }, h)))),
+      body));
   }
-  const table = el('table', { class: 'nodes', 'data-testid': 'node-table', 'aria-label': 'Nodes' },
-    el('thead', {}, el('tr', {}, ...['Node', 'ID', 'Product', 'Bus', 'NMT', 'Device state', 'Err. reg.', 'Last EMCY'].map((h) => el('th', { scope: 'col' }, h)))),
-    body);
-  host.replaceChildren(table);
+
+  update(live: ReadonlyMap<string, NodeInfo>, selected: string | null): void {
+    for (const [name, c] of this.rows) {
+      const n = live.get(name);
+      const set = (e: HTMLElement, text: string) => { if (e.textContent !== text) e.textContent = text; };
+      set(c.nmt, n?.nmt ?? '?');
+      c.nmt.className = `nmt nmt-${(n?.nmt ?? 'unknown').toLowerCase()}`;
+      set(c.device, n ? deviceSummary(n) : '?');
+      set(c.errreg, n ? `0x${hex(n.error_register, 2)}` : '?');
+      const lastEmcy = n?.emcy.length ? n.emcy[n.emcy.length - 1] : null;
+      set(c.emcy, lastEmcy ? `${hex(lastEmcy.code, 4)}h ${lastEmcy.text}` : '');
+      c.row.classList.toggle('selected', name === selected);
+      c.row.setAttribute('aria-selected', name === selected ? 'true' : 'false');
+    }
+  }
 }
