@@ -55,7 +55,7 @@ export class Plots {
         legend: { show: false },
         cursor: { show: false },
         scales: { x: { time: false } },
-        axes: [{ label: 't [s]', size: 30 }, { size: 62, values: (_u: uPlot, ticks: number[]) => ticks.map(formatReading) }],
+        axes: [{ label: 't [s]', size: 30 }, { size: 78, values: (_u: uPlot, ticks: number[]) => ticks.map(formatReading) }],
         series: [{}, { label: name, stroke: '#1f6fd1', width: 1.5, spanGaps: false }],
       }, [[], []], box);
       this.charts.set(name, { plot, readout });
