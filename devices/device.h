@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "devices/canopen/node.h"
+#include "devices/profile_status.h"
 #include "sim/ports.h"
 
 namespace devices {
@@ -45,6 +46,9 @@ class Device {
   virtual std::vector<FaultInfo> faults() const { return {}; }
   /// Activates/clears a named fault; returns an error message, empty on success.
   virtual std::string inject_fault(std::string_view name, bool active);
+
+  /// The device profile's state now (on the scheduler's thread; allocates nothing).
+  virtual ProfileStatus profile_status() { return {}; }
 
   /// Power cycle as a scenario sees it. Devices with state that survives power-off (multiturn
   /// counters, non-volatile memory) override and keep it.

@@ -56,46 +56,49 @@ void FaultInjector::check(const FaultSpec& f) {
 }
 
 void FaultInjector::apply(const FaultSpec& f, sim::Time now) {
+  auto clear = apply_now(f, now);
+  if (f.duration && clear) undo_.push_back({now + *f.duration, std::move(clear)});
+}
+
+FaultInjector::Clear FaultInjector::apply_clearable(const FaultSpec& f, sim::Time now) { return apply_now(f, now); }
+
+FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now) {
   ++applied_;
+  Clear clear;
   if (log_) log_(now, "fault: " + f.summary + (f.duration ? " for " + format_value(sim::seconds(*f.duration)) + " s" : ""));
-  const sim::Time end = f.duration ? now + *f.duration : now;
   std::visit(
       [&](const auto& a) {
         using T = std::decay_t<decltype(a)>;
         if constexpr (std::is_same_v<T, WireFault>) {
           auto* filter = filters_[static_cast<std::size_t>(world_.bus_index(a.bus))].get();
           const int handle = filter->add(a);
-          if (f.duration) undo_.push_back({end, [filter, handle](sim::Time) { filter->remove(handle); }});
+          clear = [filter, handle](sim::Time) { filter->remove(handle); };
         } else if constexpr (std::is_same_v<T, BusOff>) {
           auto& n = node(a.node);
           auto* bus = world_.buses()[static_cast<std::size_t>(n.bus)].get();
           const int ep = n.device->node().endpoint();
           bus->set_online(ep, false);
-          if (f.duration) {
-            auto* canopen_node = &n.device->node();
-            undo_.push_back({end, [bus, ep, canopen_node](sim::Time) {
-                               bus->set_online(ep, true);
-                               // Back from bus-off: the node's communication-error reaction (0x1029).
-                               canopen_node->communication_error(canopen::CommError::BusOffRecovered);
-                             }});
-          }
+          auto* canopen_node = &n.device->node();
+          clear = [bus, ep, canopen_node](sim::Time) {
+            bus->set_online(ep, true);
+            // Back from bus-off: the node's communication-error reaction (0x1029).
+            canopen_node->communication_error(canopen::CommError::BusOffRecovered);
+          };
         } else if constexpr (std::is_same_v<T, DeviceFault>) {
           auto* device = node(a.node).device.get();
           if (auto err = device->inject_fault(a.fault, a.active); !err.empty()) {
             verdicts_.fail("fault " + f.summary, f.mark, now, "fault applied", err);
             return;
           }
-          if (f.duration) {
-            const std::string name = a.fault;
-            const bool active = a.active;
-            undo_.push_back({end, [device, name, active](sim::Time) { device->inject_fault(name, !active); }});
-          }
+          const std::string name = a.fault;
+          const bool active = a.active;
+          clear = [device, name, active](sim::Time) { device->inject_fault(name, !active); };
         } else if constexpr (std::is_same_v<T, Power>) {
           auto* device = node(a.node).device.get();
           switch (a.kind) {
             case Power::Kind::Off:
               device->power_off();
-              if (f.duration) undo_.push_back({end, [device](sim::Time t) { device->power_on(t); }});
+              clear = [device](sim::Time t) { device->power_on(t); };
               break;
             case Power::Kind::On: device->power_on(now); break;
             case Power::Kind::Reset:
@@ -115,14 +118,15 @@ void FaultInjector::apply(const FaultSpec& f, sim::Time now) {
             verdicts_.fail("fault " + f.summary, f.mark, now, "plant parameter accepted", err);
             return;
           }
-          if (f.duration && old) {
+          if (old) {
             const std::string name = a.name;
             const double value = *old;
-            undo_.push_back({end, [plant, name, value](sim::Time) { plant->set_parameter(name, value); }});
+            clear = [plant, name, value](sim::Time) { plant->set_parameter(name, value); };
           }
         }
       },
       f.action);
+  return clear;
 }
 
 void FaultInjector::step(sim::Time now, sim::Duration) {

@@ -28,6 +28,11 @@ class FaultInjector final : public sim::Steppable {
   void check(const FaultSpec& f);
   /// Applies `f` now (and schedules its end if it has a duration).
   void apply(const FaultSpec& f, sim::Time now);
+  /// What undoes a fault applied by apply_clearable() (call it between ticks); empty when the
+  /// fault has nothing to undo (power on, reset, a fault that was refused).
+  using Clear = std::function<void(sim::Time)>;
+  /// Applies `f` (without a duration) now and returns what ends it: faults injected live.
+  Clear apply_clearable(const FaultSpec& f, sim::Time now);
 
   void step(sim::Time now, sim::Duration dt) override;
   std::size_t applied() const { return applied_; }
@@ -43,6 +48,7 @@ class FaultInjector final : public sim::Steppable {
     std::function<void(sim::Time)> action;
   };
   NodeInstance& node(const std::string& name);
+  Clear apply_now(const FaultSpec& f, sim::Time now);
 
   World& world_;
   Verdicts& verdicts_;

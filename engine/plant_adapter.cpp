@@ -19,6 +19,7 @@ class PhysicsPlant final : public PlantModel {
     return status.ok() ? std::string() : status.reason();
   }
   std::optional<double> parameter(std::string_view name) const override { return plant_.parameter(name); }
+  std::vector<std::string> parameter_names() const override { return plant_.parameter_names(); }
 
  private:
   plant::Plant plant_;

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "sim/ports.h"
 #include "sim/scheduler.h"
@@ -22,6 +23,8 @@ class PlantModel : public sim::Steppable {
   /// Changes "<component>.<parameter>" between steps; returns an error message, empty on success.
   virtual std::string set_parameter(std::string_view name, double value) = 0;
   virtual std::optional<double> parameter(std::string_view name) const = 0;
+  /// The names parameter() and set_parameter() know (for catalogues such as the control plane's).
+  virtual std::vector<std::string> parameter_names() const { return {}; }
 };
 
 /// Builds a plant from a scenario's `plant:` section. Throws LoadError (`file:line:col: reason`).

@@ -72,7 +72,7 @@ Runner::Runner(const Scenario& scenario, const Environment& env, const RunOption
   m.duration = options.duration ? options.duration : scenario.clock.duration;
   bool realtime = options.realtime || scenario.clock.mode == ClockSpec::Mode::RealTime ||
                   (scenario.clock.mode == ClockSpec::Mode::Auto && m.world->any_socketcan());
-  if (!m.duration && !m.master->has_script() && !realtime)
+  if (!m.duration && !m.master->has_script() && !realtime && !options.extension)
     throw LoadError(scenario.clock.mark.line > 0 ? scenario.clock.mark : SourceMark{scenario.file, 0, 0},
                     "nothing ends this run: give the clock a duration (or --duration), a script, or run in real time");
 
@@ -131,6 +131,7 @@ int Runner::run() {
   g_active.store(this);
   auto& sched = *m.scheduler;
   const bool realtime = sched.mode() == sim::ClockMode::RealTime;
+  if (m.options.extension) m.options.extension->attach(RunContext{m.scenario, *m.world, *m.faults, sched});
   for (auto& n : m.world->nodes()) n.device->power_on(sched.now());
   // One line when the nodes are up, so a master programmer (real time, or an external master with
   // --no-script) knows where to connect before anything else happens.
@@ -152,7 +153,8 @@ int Runner::run() {
   const std::uint64_t limit_ticks =
       m.duration ? static_cast<std::uint64_t>((m.duration->count() + sched.tick().count() - 1) / sched.tick().count()) : 0;
   while (!sched.stop_requested()) {
-    if (m.duration ? sched.stats().ticks >= limit_ticks : (m.master->has_script() && m.master->finished())) break;
+    const bool end = m.duration ? sched.stats().ticks >= limit_ticks : (m.master->has_script() && m.master->finished());
+    if (m.options.extension ? !m.options.extension->before_tick(end) : end) break;
     sched.run_ticks(1);
     if (m.options.progress && (sched.stats().ticks & 255) == 0) {
       const double w = wall_now();
@@ -173,6 +175,7 @@ int Runner::run() {
   if (progress_shown) std::fprintf(m.options.out, "\r%60s\r", "");
   const double wall = wall_now() - wall_start;
   m.summary.interrupted = sched.stop_requested();
+  if (m.options.extension) m.options.extension->detach();
   m.master->finish(sched.now());
   g_active.store(nullptr);
 
@@ -269,7 +272,9 @@ int run_scenario_file(const std::string& path, const Environment& env, const Run
       s.outputs.plots.clear();
       s.outputs.junit.clear();
     }
-    Runner runner(s, env, options);
+    RunOptions o = options;
+    if (o.extension_for && !o.extension) o.extension = o.extension_for(s);
+    Runner runner(s, env, o);
     return runner.run();
   } catch (const LoadError& e) {
     std::fprintf(options.out, "%s\n", e.what());

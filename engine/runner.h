@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -21,6 +22,7 @@
 
 #include "engine/environment.h"
 #include "engine/outcome.h"
+#include "engine/run_extension.h"
 #include "engine/scenario.h"
 
 namespace scenario {
@@ -35,6 +37,12 @@ struct RunOptions {
   bool progress = false;                   ///< progress line on stderr (a terminal)
   bool quiet = false;                      ///< no summary (tests, benchmarks)
   std::FILE* out = stderr;                 ///< summary, failures, log lines
+  /// Watches and steers the run between ticks (the live control plane); may keep a run going
+  /// past its duration. Not owned.
+  RunExtension* extension = nullptr;
+  /// Or: makes the extension once the scenario is loaded (from its `ui:`); nullptr = none.
+  /// Throws LoadError for a bad `ui:` (e.g. a port in use).
+  std::function<RunExtension*(const Scenario&)> extension_for;
 };
 
 struct RunSummary {

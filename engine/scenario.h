@@ -96,6 +96,18 @@ struct OutputSpec {
   std::string junit;
 };
 
+// ---- the live control plane ---------------------------------------------------------------------
+
+/// `ui:` — serve the control plane (control/, docs/api.md) while the scenario runs. Data only: the
+/// command line builds the server.
+struct UiSpec {
+  std::string listen;         ///< "[ADDR:]PORT"; "" = no control plane
+  bool allow_remote = false;  ///< a non-loopback address needs it
+  bool start_paused = true;   ///< virtual time: wait at t = 0 for the dashboard
+  double speed = 1.0;         ///< virtual time: × wall clock while running (0 = as fast as possible)
+  SourceMark mark;
+};
+
 // ---- faults -------------------------------------------------------------------------------------
 
 struct WireFault {
@@ -244,6 +256,7 @@ struct Scenario {
   OutputSpec outputs;
   std::vector<Step> script;
   std::vector<FaultSpec> faults;
+  UiSpec ui;
 };
 
 }  // namespace scenario

@@ -189,6 +189,29 @@ std::vector<SignalExpr> read_signals(const YAML::Node& n, const std::string& fil
   return out;
 }
 
+UiSpec read_ui(const YAML::Node& node, const std::string& file) {
+  UiSpec u;
+  u.mark = mark_of(node, file);
+  if (node.IsScalar()) {
+    u.listen = read_string(node, file, "ui");
+    return u;
+  }
+  MapReader r(node, file, "ui");
+  u.listen = read_string(r.require("listen"), file, "listen");
+  if (auto a = r.get("allow_remote")) u.allow_remote = read_bool(a, file, "allow_remote");
+  if (auto s = r.get("start")) {
+    const auto text = read_string(s, file, "start");
+    if (text != "paused" && text != "running") throw LoadError(mark_of(s, file), "start: '" + text + "' is neither 'paused' nor 'running'");
+    u.start_paused = text == "paused";
+  }
+  if (auto sp = r.get("speed")) {
+    u.speed = read_number(sp, file, "speed");
+    if (u.speed < 0 || u.speed > 1000) throw LoadError(mark_of(sp, file), "speed: must be between 0 (as fast as possible) and 1000");
+  }
+  r.finish();
+  return u;
+}
+
 OutputSpec read_outputs(const YAML::Node& node, const std::string& file) {
   MapReader r(node, file, "outputs");
   OutputSpec o;
@@ -265,6 +288,7 @@ Scenario parse_scenario(const std::string& text, const std::string& file, const 
   if (auto o = r.get("outputs")) s.outputs = read_outputs(o, file);
   if (auto sc = r.get("script")) s.script = read_script(sc, file);
   if (auto f = r.get("faults")) s.faults = read_faults(f, file);
+  if (auto u = r.get("ui")) s.ui = read_ui(u, file);
   r.finish();
   if (s.name.empty()) {
     const auto slash = file.rfind('/');

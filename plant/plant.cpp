@@ -161,6 +161,13 @@ std::optional<double> Plant::parameter(std::string_view qualified_name) const {
   return c->parameter(index);
 }
 
+std::vector<std::string> Plant::parameter_names() const {
+  std::vector<std::string> names;
+  for (const auto& c : components_)
+    for (const auto& p : c->type().parameters) names.push_back(c->name() + "." + std::string(p.name));
+  return names;
+}
+
 std::uint64_t Plant::physics_steps() const { return solver_->steps_taken(); }
 std::uint64_t Plant::ode_steps() const { return world_->ode_steps(); }
 

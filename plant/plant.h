@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -45,6 +46,8 @@ class Plant final : public sim::Steppable {
   /// "component.parameter" = value, checked like a description (range, consistency).
   Status set_parameter(std::string_view qualified_name, double value);
   std::optional<double> parameter(std::string_view qualified_name) const;
+  /// Every "component.parameter" set_parameter() knows, in component order.
+  std::vector<std::string> parameter_names() const;
 
   /// Energy bookkeeping (costs two extra evaluations per physics step; off by default).
   void set_energy_accounting(bool on);

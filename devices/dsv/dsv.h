@@ -41,6 +41,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
   void power_on(sim::Time now) override;
+  devices::ProfileStatus profile_status() override { return control_->profile_status(); }
 
   const DsvOptions& options() const { return options_; }
   dsp408::ChannelControl& control() { return *control_; }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/profiles/cia406/profile_status.h"
 #include "devices/hlt1100/hlt1100_application.h"
 #include "devices/hlt1100/hlt1100_settings.h"
 #include "devices/registry.h"
@@ -24,6 +25,7 @@ class Device final : public devices::Device {
   sim::PortList ports() override;
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
+  devices::ProfileStatus profile_status() override { return cia406::profile_status(node_->od()); }
 
   Application& application() { return *app_; }
   const Settings& settings() const { return *settings_; }

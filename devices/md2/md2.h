@@ -36,6 +36,8 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
   std::string set_input(std::string_view name, double value) override;
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
+  /// Channel 1's device state.
+  devices::ProfileStatus profile_status() override { return channels_.front()->control().profile_status(); }
 
   const Md2Options& options() const { return options_; }
   Md2Channel& md2_channel(int c) { return *channels_[static_cast<std::size_t>(c - 1)]; }

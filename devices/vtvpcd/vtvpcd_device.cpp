@@ -374,4 +374,15 @@ void VtvpcdDevice::publish(const SetSelection& sel, double alpha_meas, double p_
   put(kDiscreteOutputs, discrete_outputs(settings_.do_functions, os, faults_->shorted_outputs()));
 }
 
+devices::ProfileStatus VtvpcdDevice::profile_status() {
+  devices::ProfileStatus s;
+  s.profile = devices::ProfileStatus::Profile::Vtvpcd;
+  s.state = faults_->stop_active() ? "FAULT_STOP" : enable_ < 0.5 ? "NOT_ENABLED" : "RUNNING";
+  for (const auto& d : fault_definitions()) {
+    if (!faults_->active(d.condition) || s.fault_count >= s.faults.size()) continue;
+    s.faults[s.fault_count++] = d.name;
+  }
+  return s;
+}
+
 }  // namespace vtvpcd

@@ -35,6 +35,8 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   sim::PortList ports() override;
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
+  /// Run state (fault stop / not enabled / running) and the active faults.
+  devices::ProfileStatus profile_status() override;
   /// Unpowered, the pilot valve is de-energised.
   void power_off() override;
 

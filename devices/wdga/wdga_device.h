@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/profiles/cia406/profile_status.h"
 #include "devices/registry.h"
 #include "devices/wdga/wdga_application.h"
 #include "devices/wdga/wdga_settings.h"
@@ -27,6 +28,7 @@ class Device final : public devices::Device {
   sim::PortList ports() override;
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
+  devices::ProfileStatus profile_status() override { return cia406::profile_status(node_->od()); }
   void power_off() override;
   void power_on(sim::Time now) override;
 

@@ -6,7 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "control/control_plane.h"
 #include "devices/generic/eds_node.h"
+#include "engine/runner.h"
 #include "devices/registry.h"
 #include "sim/bus.h"
 #include "sim/log.h"
@@ -22,9 +24,11 @@ namespace vplant {
 namespace {
 
 sim::Scheduler* g_running = nullptr;
+scenario::Runner* g_runner = nullptr;
 
 extern "C" void stop_on_signal(int) {
   if (g_running) g_running->request_stop();
+  if (g_runner) g_runner->request_stop();
 }
 
 struct NodeOptions {
@@ -39,14 +43,73 @@ struct NodeOptions {
   double duration_s = 0;
   std::string trace;
   bool virtual_time = false;
+  std::string ui;
+  bool ui_allow_remote = false;
 };
+
+/// `--ui`: the node runs as a one-node scenario (bus "main"), so the control plane sees it as it
+/// sees any run (docs/api.md).
+int run_node_with_ui(const NodeOptions& o, const std::map<std::string, std::string>& settings,
+                     const std::map<std::string, double>& inputs) {
+  control::UiOptions u;
+  if (auto err = control::parse_ui_address(o.ui, u); !err.empty()) {
+    std::fprintf(stderr, "vplant node: --ui %s\n", err.c_str());
+    return kExitBadInput;
+  }
+  if (o.trace == "-") {
+    std::fprintf(stderr, "vplant node: --trace - (stdout) cannot be combined with --ui; give a file\n");
+    return kExitBadInput;
+  }
+  u.allow_remote = o.ui_allow_remote;
+  scenario::Scenario s;
+  s.file = "vplant node";
+  s.dir = ".";
+  s.name = o.eds.empty() ? o.device : o.eds;
+  s.buses.push_back(scenario::BusSpec{"main", o.can, 500000, {}});
+  scenario::NodeSpec n;
+  n.name = o.eds.empty() ? o.device : "node";
+  n.device = o.eds.empty() ? o.device : "eds";
+  n.eds = o.eds;
+  n.variant = o.variant;
+  n.node_id = static_cast<std::uint8_t>(o.node_id);
+  n.bus = "main";
+  n.settings = settings;
+  n.store = o.store;
+  for (const auto& [name, value] : inputs) {
+    n.inputs.emplace_back(name, value);
+    n.input_marks.push_back(scenario::SourceMark{"--set", 0, 0});
+  }
+  s.nodes.push_back(std::move(n));
+  s.clock.mode = o.virtual_time ? scenario::ClockSpec::Mode::Virtual : scenario::ClockSpec::Mode::RealTime;
+  if (o.duration_s > 0) s.clock.duration = sim::from_seconds(o.duration_s);
+  auto plane = std::make_unique<control::ControlPlane>(u);
+  if (auto err = plane->bind(); !err.empty()) {
+    std::fprintf(stderr, "vplant node: %s\n", err.c_str());
+    return kExitBadInput;
+  }
+  scenario::RunOptions ro;
+  ro.trace = o.trace;
+  ro.extension = plane.get();
+  try {
+    scenario::Runner runner(s, scenario::default_environment(), ro);
+    g_runner = &runner;
+    std::signal(SIGINT, stop_on_signal);
+    std::signal(SIGTERM, stop_on_signal);
+    const int rc = runner.run();
+    g_runner = nullptr;
+    return rc == 0 ? kExitOk : kExitBadInput;
+  } catch (const scenario::LoadError& e) {
+    std::fprintf(stderr, "vplant node: %s\n", e.what());
+    return kExitBadInput;
+  }
+}
 
 int run_node(const NodeOptions& o) {
   if (o.eds.empty() == o.device.empty()) {
     std::fprintf(stderr, "vplant node: give exactly one of --eds FILE or --device NAME\n");
     return kExitBadInput;
   }
-  if (o.virtual_time && o.duration_s <= 0) {
+  if (o.virtual_time && o.duration_s <= 0 && o.ui.empty()) {
     std::fprintf(stderr, "vplant node: --virtual needs --duration\n");
     return kExitBadInput;
   }
@@ -64,6 +127,8 @@ int run_node(const NodeOptions& o) {
     std::fprintf(stderr, "vplant node: --set %s\n", error.c_str());
     return kExitBadInput;
   }
+
+  if (!o.ui.empty()) return run_node_with_ui(o, options.settings, inputs);
 
   std::unique_ptr<devices::Device> device;
   if (!o.eds.empty()) {
@@ -159,7 +224,9 @@ Runner add_node_command(CLI::App& app) {
   app.add_option("--store", o->store, "file for the node's non-volatile memory (0x1010 save)");
   app.add_option("--duration", o->duration_s, "seconds to run (default: until SIGINT/SIGTERM)")->check(CLI::NonNegativeNumber);
   app.add_option("--trace", o->trace, "write all frames in candump -L format ('-' = stdout)");
-  app.add_flag("--virtual", o->virtual_time, "virtual time (as fast as possible; needs --duration)");
+  app.add_flag("--virtual", o->virtual_time, "virtual time (as fast as possible; needs --duration unless --ui)");
+  app.add_option("--ui", o->ui, "[ADDR:]PORT: serve the live control plane (docs/api.md); virtual time starts paused");
+  app.add_flag("--ui-allow-remote", o->ui_allow_remote, "allow --ui on a non-loopback address (no authentication!)");
   return [o] { return run_node(*o); };
 }
 

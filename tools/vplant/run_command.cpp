@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "control/control_plane.h"
 #include "engine/runner.h"
 #include "engine/yaml_fields.h"
 #include "tools/vplant/commands.h"
@@ -27,6 +28,10 @@ struct RunArgs {
   long long seed = -1;
   std::string trace, csv, junit;
   bool quiet = false;
+  std::string ui;
+  bool ui_allow_remote = false;
+  bool ui_run = false;
+  double ui_speed = -1;
 };
 
 extern "C" void stop_run_on_signal(int) {
@@ -56,6 +61,28 @@ int run(const RunArgs& a) {
   o.junit = a.junit;
   o.quiet = a.quiet;
   o.progress = !a.quiet && ::isatty(STDERR_FILENO);
+  // The control plane: --ui overrides the scenario's `ui:`; made once the scenario is loaded.
+  std::unique_ptr<control::ControlPlane> ui;
+  if (!a.ui.empty()) {
+    control::UiOptions probe;
+    if (auto err = control::parse_ui_address(a.ui, probe); !err.empty()) {
+      std::fprintf(stderr, "vplant run: --ui %s\n", err.c_str());
+      return kExitBadInput;
+    }
+  }
+  o.extension_for = [&a, &ui](const scenario::Scenario& s) -> scenario::RunExtension* {
+    const std::string listen = !a.ui.empty() ? a.ui : s.ui.listen;
+    if (listen.empty()) return nullptr;
+    const scenario::SourceMark mark = !a.ui.empty() ? scenario::SourceMark{"--ui", 0, 0} : s.ui.mark;
+    control::UiOptions u;
+    if (auto err = control::parse_ui_address(listen, u); !err.empty()) throw scenario::LoadError(mark, "ui: " + err);
+    u.allow_remote = a.ui_allow_remote || (a.ui.empty() && s.ui.allow_remote);
+    u.clock.start_paused = a.ui_run ? false : s.ui.start_paused;
+    u.clock.speed = a.ui_speed >= 0 ? a.ui_speed : s.ui.speed;
+    ui = std::make_unique<control::ControlPlane>(u);
+    if (auto err = ui->bind(); !err.empty()) throw scenario::LoadError(mark, err);
+    return ui.get();
+  };
   std::signal(SIGINT, stop_run_on_signal);
   std::signal(SIGTERM, stop_run_on_signal);
   return scenario::run_scenario_file(a.scenario, scenario::default_environment(), o);
@@ -76,6 +103,12 @@ Runner add_run_command(CLI::App& app) {
   app.add_option("--csv", a->csv, "write the recorded signals as CSV (default signals: every wired port)");
   app.add_option("--junit", a->junit, "write the assertions as JUnit XML");
   app.add_flag("--quiet", a->quiet, "print only failures");
+  app.add_option("--ui", a->ui,
+                 "[ADDR:]PORT: serve the live control plane and dashboard (default address 127.0.0.1; docs/api.md)");
+  app.add_flag("--ui-allow-remote", a->ui_allow_remote, "allow --ui on a non-loopback address (no authentication!)");
+  app.add_flag("--ui-run", a->ui_run, "virtual time with --ui: start running instead of paused");
+  app.add_option("--ui-speed", a->ui_speed, "virtual time with --ui: × wall clock while running (0 = as fast as possible; default 1)")
+      ->check(CLI::Range(0.0, 1000.0));
   return [a] { return run(*a); };
 }
 

@@ -105,4 +105,17 @@ void ChannelControl::publish_status() {
   if (auto* e = od_.entry(objects_.status_word, 0)) put(*e, status_word());
 }
 
+devices::ProfileStatus ChannelControl::profile_status() const {
+  devices::ProfileStatus s;
+  s.profile = devices::ProfileStatus::Profile::Dsp408;
+  s.state = to_string(dsm_.state());
+  s.control_word = dsm_.control_word();
+  s.status_word = status_word();
+  s.transitions = dsm_.transitions();
+  s.transition_from = to_string(dsm_.last_transition().from);
+  s.transition_to = to_string(dsm_.last_transition().to);
+  s.transition_control_word = dsm_.last_transition().control_word;
+  return s;
+}
+
 }  // namespace dsp408

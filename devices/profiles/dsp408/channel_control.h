@@ -13,6 +13,7 @@
 #include <functional>
 
 #include "devices/canopen/object_dictionary.h"
+#include "devices/profile_status.h"
 #include "devices/profiles/dsp408/control_word.h"
 #include "devices/profiles/dsp408/device_state_machine.h"
 
@@ -65,6 +66,8 @@ class ChannelControl {
   canopen::WriteCheck mode_lock() const;
   /// Write check for objects the bus may not write under local or PASO control: 0x08000021.
   canopen::WriteCheck local_lock() const;
+  /// The channel as the live control plane shows it.
+  devices::ProfileStatus profile_status() const;
   bool modes_changeable() const { return state() == DeviceState::Init || state() == DeviceState::Disabled; }
 
  private:

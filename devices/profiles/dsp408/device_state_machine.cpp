@@ -14,6 +14,8 @@ void DeviceStateMachine::go(DeviceState to) {
   const DeviceState from = state_;
   if (from == to) return;
   state_ = to;
+  last_ = {from, to, cw_};
+  ++transitions_;
   if (listener_) listener_(from, to);
 }
 

@@ -64,6 +64,15 @@ class DeviceStateMachine {
 
   DeviceState state() const { return state_; }
 
+  /// The last state change and the control word then (for watchers: the live control plane).
+  struct Transition {
+    DeviceState from = DeviceState::NotReady;
+    DeviceState to = DeviceState::NotReady;
+    std::uint16_t control_word = 0;
+  };
+  const Transition& last_transition() const { return last_; }
+  std::uint32_t transitions() const { return transitions_; }
+
  private:
   void go(DeviceState to);
   void evaluate(bool reset_edge);
@@ -77,6 +86,8 @@ class DeviceStateMachine {
   bool strict_reset_ = false;
   Listener listener_;
   FaultReset fault_reset_;
+  Transition last_;
+  std::uint32_t transitions_ = 0;
 };
 
 }  // namespace dsp408

@@ -1,0 +1,59 @@
+// The live control plane (issue 11): an HTTP API and server-sent-event stream beside a running
+// scenario (docs/api.md). It is the run's RunExtension; the HTTP server runs on its own threads
+// and reaches the simulation only through the SimBridge (commands queued between ticks,
+// published snapshots). `vplant run --ui [ADDR:]PORT` creates one.
+#pragma once
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "control/sim_bridge.h"
+#include "engine/run_extension.h"
+
+namespace control {
+
+struct UiOptions {
+  std::string address = "127.0.0.1";
+  int port = 0;               ///< 0 = an ephemeral port (tests)
+  bool allow_remote = false;  ///< a non-loopback address needs it
+  ClockOptions clock;
+  std::size_t max_streams = 4;
+  std::FILE* out = stderr;    ///< the URL line and warnings; nullptr = silent
+};
+
+/// Parses "[ADDR:]PORT" into `options`; returns an error message, empty on success.
+std::string parse_ui_address(std::string_view text, UiOptions& options);
+bool is_loopback(const std::string& address);
+
+class ControlPlane final : public scenario::RunExtension {
+ public:
+  explicit ControlPlane(UiOptions options);
+  ~ControlPlane() override;
+  ControlPlane(const ControlPlane&) = delete;
+  ControlPlane& operator=(const ControlPlane&) = delete;
+
+  /// Binds the listening socket (before the run, so a taken port fails early); returns an error
+  /// message, empty on success. A non-loopback address without allow_remote is refused.
+  std::string bind();
+  int port() const { return port_; }
+  std::string url() const;
+
+  // scenario::RunExtension: attach starts serving (and prints the URL); detach stops the
+  // simulation side (the server answers 503 "the run has ended" until destroyed).
+  void attach(const scenario::RunContext& context) override;
+  bool before_tick(bool end_reached) override { return bridge_.before_tick(end_reached); }
+  void detach() override;
+
+  SimBridge& bridge() { return bridge_; }
+
+ private:
+  struct Server;
+  UiOptions options_;
+  int port_ = 0;
+  SimBridge bridge_;
+  std::unique_ptr<Server> server_;
+};
+
+}  // namespace control

@@ -1,0 +1,186 @@
+#include "control/event_hub.h"
+
+#include "control/json_views.h"
+
+namespace control {
+
+namespace {
+constexpr auto kBatchPeriod = std::chrono::milliseconds(50);
+constexpr std::size_t kMaxBacklog = 4 << 20;        // bytes per client
+constexpr std::size_t kMaxFramesPerBatch = 4096;    // the rest waits for the next batch
+
+void append_event(std::string& out, const char* name, const std::string& data) {
+  out += "event: ";
+  out += name;
+  out += "\ndata: ";
+  out += data;
+  out += "\n\n";
+}
+}  // namespace
+
+bool EventHub::Client::next(std::string& out, std::chrono::milliseconds timeout) {
+  std::unique_lock lk(mu_);
+  cv_.wait_for(lk, timeout, [this] { return closed_ || !outbox_.empty(); });
+  out.clear();
+  out.swap(outbox_);
+  return !closed_;
+}
+
+EventHub::EventHub(SimBridge& bridge, const DictionaryCatalog& catalog, StreamTopology topology, std::size_t max_clients)
+    : bridge_(bridge), catalog_(catalog), topo_(std::move(topology)), max_clients_(max_clients) {
+  for (std::size_t b = 0; b < topo_.bus_names.size(); ++b)
+    decoders_.push_back(std::make_unique<BusDecoderContext>(catalog_, static_cast<int>(b)));
+}
+
+EventHub::~EventHub() { stop(); }
+
+void EventHub::start() {
+  if (!thread_.joinable()) thread_ = std::thread([this] { run(); });
+}
+
+void EventHub::stop() {
+  {
+    std::lock_guard lk(mu_);
+    if (stopping_ && !thread_.joinable()) return;
+    stopping_ = true;
+    for (auto& c : clients_) {
+      std::lock_guard clk(c->mu_);
+      c->closed_ = true;
+      c->cv_.notify_all();
+    }
+  }
+  stop_cv_.notify_all();
+  if (thread_.joinable()) thread_.join();
+}
+
+std::shared_ptr<EventHub::Client> EventHub::open(std::vector<std::size_t> signals, double rate_hz) {
+  std::lock_guard lk(mu_);
+  if (stopping_ || clients_.size() >= max_clients_) return nullptr;
+  auto c = std::make_shared<Client>();
+  c->signals_ = std::move(signals);
+  c->period_us_ = static_cast<std::int64_t>(1e6 / rate_hz);
+  clients_.push_back(c);
+  bridge_.add_listener();
+  return c;
+}
+
+void EventHub::close(const std::shared_ptr<Client>& client) {
+  std::lock_guard lk(mu_);
+  for (auto it = clients_.begin(); it != clients_.end(); ++it) {
+    if (*it != client) continue;
+    clients_.erase(it);
+    bridge_.remove_listener();
+    return;
+  }
+}
+
+std::size_t EventHub::clients() const {
+  std::lock_guard lk(mu_);
+  return clients_.size();
+}
+
+void EventHub::run() {
+  std::unique_lock lk(mu_);
+  while (!stopping_) {
+    lk.unlock();
+    if (bridge_.attached()) batch();
+    lk.lock();
+    stop_cv_.wait_for(lk, kBatchPeriod, [this] { return stopping_; });
+  }
+}
+
+std::string EventHub::nodes_event(const std::vector<NodeStatus>& nodes) const {
+  nlohmann::json a = nlohmann::json::array();
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const auto b = static_cast<std::size_t>(topo_.node_bus[i]);
+    a.push_back(node_json(topo_.node_names[i], topo_.bus_names[b], nodes[i]));
+  }
+  return a.dump();
+}
+
+void EventHub::batch() {
+  std::vector<std::shared_ptr<Client>> clients;
+  {
+    std::lock_guard lk(mu_);
+    clients = clients_;
+  }
+  // Nodes and PDO mappings first: the frames of this batch decode with them.
+  bool nodes_changed = false;
+  if (const auto v = bridge_.node_version(); v != node_version_) {
+    node_version_ = bridge_.nodes(nodes_);
+    nodes_event_ = nodes_event(nodes_);
+    nodes_changed = true;
+  }
+  std::vector<std::vector<PdoMap>> maps;
+  const auto pv = bridge_.pdo_maps(maps);
+  if (pv != pdo_version_ || nodes_changed) {
+    if (pv != pdo_version_) maps_ = std::move(maps);
+    pdo_version_ = pv;
+    for (auto& d : decoders_) d->update(topo_.node_bus, nodes_, maps_);
+  }
+
+  // Frames: decoded once for every client (drained even without clients: nothing stale later).
+  std::string frames;
+  CapturedFrame f;
+  std::size_t n = 0;
+  nlohmann::json batch = nlohmann::json::array();
+  while (n < kMaxFramesPerBatch && bridge_.frames().pop(f)) {
+    ++n;
+    if (clients.empty()) continue;
+    const auto& bus = topo_.bus_names[f.bus < topo_.bus_names.size() ? f.bus : 0];
+    const auto decoded = canopen::decode_frame(f.frame, *decoders_[f.bus < decoders_.size() ? f.bus : 0]);
+    batch.push_back(frame_json(f, bus, decoded));
+  }
+  if (!batch.empty()) frames = batch.dump();
+  const auto dropped_total = bridge_.frames_dropped();
+  const auto dropped = dropped_total - dropped_seen_;
+  dropped_seen_ = dropped_total;
+
+  // Signal rows: each client takes the samples its rate asks for.
+  std::vector<std::pair<std::vector<std::int64_t>, std::vector<std::vector<double>>>> per_client(clients.size());
+  for (std::size_t i = 0; i < clients.size(); ++i) per_client[i].second.resize(clients[i]->signals_.size());
+  while (bridge_.signal_rows().pop(row_)) {
+    for (std::size_t i = 0; i < clients.size(); ++i) {
+      auto& c = *clients[i];
+      if (c.signals_.empty() || row_.t_us < c.next_sample_us_) continue;
+      c.next_sample_us_ = row_.t_us + c.period_us_;
+      per_client[i].first.push_back(row_.t_us);
+      for (std::size_t k = 0; k < c.signals_.size(); ++k) per_client[i].second[k].push_back(row_.values[c.signals_[k]]);
+    }
+  }
+
+  const auto clock = bridge_.clock();
+  const bool clock_changed = clock.t_us != last_clock_.t_us || clock.paused != last_clock_.paused ||
+                             clock.speed != last_clock_.speed || clock.end_reached != last_clock_.end_reached;
+  last_clock_ = clock;
+  const std::string clock_event =
+      nlohmann::json{{"t_us", clock.t_us}, {"paused", clock.paused}, {"speed", clock.speed}, {"end_reached", clock.end_reached}}
+          .dump();
+
+  const auto& names = bridge_.signals();
+  for (std::size_t i = 0; i < clients.size(); ++i) {
+    auto& c = *clients[i];
+    std::string out;
+    if (!c.greeted_ || nodes_changed) append_event(out, "nodes", nodes_event_);
+    if (!c.greeted_ || clock_changed) append_event(out, "clock", clock_event);
+    c.greeted_ = true;
+    if (!per_client[i].first.empty()) {
+      nlohmann::json values = nlohmann::json::object();
+      for (std::size_t k = 0; k < c.signals_.size(); ++k) values[names[c.signals_[k]].name] = per_client[i].second[k];
+      append_event(out, "signals", nlohmann::json{{"t_us", per_client[i].first}, {"values", values}}.dump());
+    }
+    std::lock_guard lk(c.mu_);
+    std::uint64_t lost = dropped;
+    if (!frames.empty()) {
+      if (c.outbox_.size() + frames.size() > kMaxBacklog) lost += n;
+      else append_event(out, "frames", frames);
+    }
+    if (lost > 0) append_event(out, "dropped", nlohmann::json{{"frames", lost}}.dump());
+    c.dropped_ += lost;
+    if (out.empty()) continue;
+    c.outbox_ += out;
+    c.cv_.notify_all();
+  }
+}
+
+}  // namespace control

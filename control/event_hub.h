@@ -1,0 +1,85 @@
+// The live stream's fan-out (server side): one thread drains what the scheduler captured every
+// 50 ms, decodes the frames once, and hands each stream client its server-sent events (frames,
+// nodes on change, signals at the client's rate, clock, dropped). A client's backlog is bounded:
+// a client that cannot keep up loses frames, counted in a "dropped" event.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "control/dictionary_catalog.h"
+#include "control/sim_bridge.h"
+
+namespace control {
+
+struct StreamTopology {
+  std::vector<std::string> bus_names;
+  std::vector<std::string> node_names;
+  std::vector<int> node_bus;
+};
+
+class EventHub {
+ public:
+  class Client {
+   public:
+    /// Waits up to `timeout` for events; false once the stream is over (hub stopped).
+    bool next(std::string& out, std::chrono::milliseconds timeout);
+
+   private:
+    friend class EventHub;
+    std::mutex mu_;
+    std::condition_variable cv_;
+    std::string outbox_;
+    bool closed_ = false;
+    std::vector<std::size_t> signals_;
+    std::int64_t period_us_ = 100000;
+    std::int64_t next_sample_us_ = 0;
+    std::uint64_t dropped_ = 0;  ///< frames this client lost (backlog full)
+    bool greeted_ = false;
+  };
+
+  EventHub(SimBridge& bridge, const DictionaryCatalog& catalog, StreamTopology topology, std::size_t max_clients);
+  ~EventHub();
+  EventHub(const EventHub&) = delete;
+  EventHub& operator=(const EventHub&) = delete;
+
+  void start();
+  void stop();
+  /// A new stream for these signals (indices into SimBridge::signals()) at `rate_hz`; nullptr
+  /// when max_clients streams are open.
+  std::shared_ptr<Client> open(std::vector<std::size_t> signals, double rate_hz);
+  void close(const std::shared_ptr<Client>& client);
+  std::size_t clients() const;
+
+ private:
+  void run();
+  void batch();
+  std::string nodes_event(const std::vector<NodeStatus>& nodes) const;
+
+  SimBridge& bridge_;
+  const DictionaryCatalog& catalog_;
+  StreamTopology topo_;
+  std::size_t max_clients_;
+  std::vector<std::unique_ptr<BusDecoderContext>> decoders_;
+
+  mutable std::mutex mu_;
+  std::condition_variable stop_cv_;
+  bool stopping_ = false;
+  std::vector<std::shared_ptr<Client>> clients_;
+  std::thread thread_;
+
+  // Hub thread state.
+  std::uint64_t node_version_ = ~0ULL, pdo_version_ = ~0ULL, dropped_seen_ = 0;
+  std::vector<NodeStatus> nodes_;
+  std::vector<std::vector<PdoMap>> maps_;
+  std::string nodes_event_;
+  ClockState last_clock_;
+  SignalRow row_;
+};
+
+}  // namespace control

@@ -1,0 +1,54 @@
+// What the scheduler's thread publishes for the server threads: plain values copied between
+// ticks, so a server thread never touches a node, a bus or the plant.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "devices/profile_status.h"
+#include "sim/can_frame.h"
+
+namespace control {
+
+struct EmcyRecord {
+  std::int64_t t_us = 0;
+  std::uint16_t code = 0;
+  std::uint8_t error_register = 0;
+  std::array<std::uint8_t, 5> data{};
+};
+
+/// One node as the dashboard shows it.
+struct NodeStatus {
+  static constexpr std::size_t kEmcyHistory = 32;
+  bool powered = false;
+  std::uint8_t nmt = 0;             ///< canopen::NmtState value
+  std::uint8_t node_id = 0;         ///< current (LSS may change it)
+  std::uint8_t error_register = 0;  ///< 0x1001
+  devices::ProfileStatus profile;
+  std::int64_t transition_t_us = -1;  ///< when the scheduler saw profile.transitions change
+  std::array<EmcyRecord, kEmcyHistory> emcy{};  ///< ring: the newest is emcy[(emcy_count-1) % size]
+  std::uint32_t emcy_count = 0;
+
+  /// Equal for the dashboard (what a "nodes" event would show).
+  bool same_as(const NodeStatus& o) const;
+};
+
+/// A frame as it crossed a bus.
+struct CapturedFrame {
+  std::int64_t t_us = 0;
+  std::uint8_t bus = 0;
+  sim::CanFrame frame;
+};
+
+/// A PDO's mapping as configured in a node's dictionary (read between ticks).
+struct PdoMap {
+  static constexpr std::size_t kMaxEntries = 8;
+  std::uint32_t cob_id = 0;
+  bool valid = false;
+  bool transmit = false;
+  std::uint8_t number = 0;  ///< 1-based
+  std::uint8_t count = 0;
+  std::array<std::uint32_t, kMaxEntries> entries{};  ///< index << 16 | sub << 8 | bits
+};
+
+}  // namespace control

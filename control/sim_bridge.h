@@ -1,0 +1,202 @@
+// The scheduler's side of the live control plane. It is the run's RunExtension: between ticks,
+// on the scheduler's thread, it runs the commands the server threads queued (SDO, NMT, frames,
+// faults, inputs, clock), gates virtual time (pause, step, run N ms, pacing), and publishes what
+// the server threads read: node status (copied when it changed), captured frames and signal
+// samples (lock-free rings, only while a stream client listens), PDO mappings. It never blocks
+// while the clock runs (try_lock; a full ring drops and counts) and allocates nothing per frame.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <future>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "control/live_state.h"
+#include "control/spsc_ring.h"
+#include "engine/run_extension.h"
+#include "engine/sdo_client.h"
+#include "sim/bus.h"
+
+namespace control {
+
+struct ClockOptions {
+  bool start_paused = true;  ///< virtual time: the run waits at t = 0 for the dashboard
+  double speed = 1.0;        ///< virtual time: × wall clock while running; 0 = as fast as possible
+};
+
+/// A plant signal the stream can sample: a port of the plant or of a node.
+struct SignalInfo {
+  std::string name;  ///< "cyl.position", "dsv.solenoid_a_current"
+  std::string unit;
+  const double* value = nullptr;
+};
+
+struct SignalRow {
+  std::int64_t t_us = 0;
+  std::vector<double> values;  ///< in SimBridge::signals() order
+};
+
+struct SdoOutcome {
+  enum class Kind { Done, Aborted, Failed, Busy } kind = Kind::Done;
+  std::vector<std::uint8_t> data;  ///< upload: the bytes read
+  std::uint32_t abort_code = 0;
+  std::string error;  ///< Failed / Busy: why
+};
+
+struct ClockState {
+  bool realtime = false;
+  std::int64_t t_us = 0;
+  std::int64_t tick_us = 1000;
+  bool paused = false;
+  double speed = 1.0;
+  std::uint64_t run_ticks_left = 0;
+  bool end_reached = false;
+};
+
+class SimBridge final : public scenario::RunExtension {
+ public:
+  /// Runs on the scheduler's thread between ticks, with the run.
+  using Command = std::function<void(const scenario::RunContext&)>;
+
+  explicit SimBridge(ClockOptions clock);
+  ~SimBridge() override;
+
+  // scenario::RunExtension (scheduler thread)
+  void attach(const scenario::RunContext& context) override;
+  bool before_tick(bool end_reached) override;
+  void detach() override;
+
+  // ---- any thread ---------------------------------------------------------------------------
+  /// Queues a command for the next tick boundary; false once the run has ended.
+  bool post(Command command);
+  /// Runs `f` between ticks and returns its result; nullopt when the run does not answer in time.
+  template <typename R>
+  std::optional<R> call(std::function<R(const scenario::RunContext&)> f, std::chrono::milliseconds timeout) {
+    auto promise = std::make_shared<std::promise<R>>();
+    auto future = promise->get_future();
+    if (!post([promise, f = std::move(f)](const scenario::RunContext& c) { promise->set_value(f(c)); })) return std::nullopt;
+    if (future.wait_for(timeout) != std::future_status::ready) return std::nullopt;
+    try {
+      return future.get();
+    } catch (const std::future_error&) {  // the run ended before the command ran
+      return std::nullopt;
+    }
+  }
+  /// An SDO transfer over node `node`'s bus (upload when `data` is empty and `upload`).
+  std::future<SdoOutcome> sdo(std::size_t node, bool upload, std::uint16_t index, std::uint8_t sub,
+                              std::vector<std::uint8_t> data);
+
+  bool attached() const { return attached_.load(); }
+  bool finished() const { return finished_.load(); }
+  ClockState clock() const;
+  /// Virtual time only (the caller checks); they take effect at the next tick boundary.
+  bool pause();
+  bool resume(std::optional<double> speed);
+  /// Runs `ticks` ticks (at the current speed), then stays paused.
+  bool run_ticks(std::uint64_t ticks);
+
+  /// Node status as last published (scenario order); returns its version (changes on change).
+  std::uint64_t nodes(std::vector<NodeStatus>& out) const;
+  std::uint64_t node_version() const { return node_version_.load(); }
+  /// PDO mappings per node as last published; returns their version.
+  std::uint64_t pdo_maps(std::vector<std::vector<PdoMap>>& out) const;
+
+  /// Frame and signal capture runs while a stream listens (counted: several streams may).
+  void add_listener();
+  void remove_listener();
+  SpscRing<CapturedFrame>& frames() { return frames_; }
+  std::uint64_t frames_dropped() const { return frames_dropped_.load(); }
+  SpscRing<SignalRow>& signal_rows() { return *signal_rows_; }
+  /// Fixed at attach.
+  const std::vector<SignalInfo>& signals() const { return signals_; }
+  std::int64_t signal_period_us() const { return signal_period_us_; }
+
+  /// Sends a frame from the control plane's endpoint on bus `bus` (scheduler thread: commands).
+  void send_frame(std::size_t bus, const sim::CanFrame& frame);
+
+  /// Fault ids: live faults applied by the dashboard (scheduler thread only).
+  struct LiveFault {
+    int id = 0;
+    std::string summary;
+    std::int64_t since_us = 0;
+    std::function<void(sim::Time)> clear;
+  };
+  std::vector<LiveFault>& live_faults() { return live_faults_; }
+  int next_fault_id() { return ++fault_ids_; }
+
+ private:
+  class BusTap;
+  class BusMaster;
+  struct SdoJob;
+
+  void service();
+  bool drain_commands();
+  void publish_nodes();
+  void refresh_pdo_maps();
+  void sample_signals();
+  void finish_sdo_jobs();
+  void pace();
+  void wait_for_work(std::chrono::steady_clock::time_point until);
+  void record_emcy(std::size_t bus, const sim::CanFrame& f, sim::Time now);
+
+  ClockOptions options_;
+  std::unique_ptr<scenario::RunContext> ctx_;
+  bool realtime_ = false;
+  std::atomic<bool> attached_{false}, finished_{false};
+
+  // Commands.
+  mutable std::mutex queue_mu_;
+  std::condition_variable wake_;
+  std::vector<Command> queue_, running_;
+  std::atomic<bool> pending_{false};
+
+  // Clock: changed only by commands (scheduler thread), read by clock() from any thread.
+  std::atomic<bool> paused_{false};
+  std::atomic<double> speed_{1.0};
+  std::atomic<std::uint64_t> budget_{0};  ///< ticks to run while paused (step, run N ms)
+  bool end_seen_ = false;
+  std::atomic<bool> end_reached_{false};
+  std::atomic<std::int64_t> now_us_{0};
+  std::chrono::steady_clock::time_point anchor_wall_;
+  std::int64_t anchor_sim_us_ = 0;
+  bool anchor_valid_ = false;
+
+  // Node status.
+  std::vector<NodeStatus> work_, last_;
+  mutable std::mutex pub_mu_;
+  std::vector<NodeStatus> published_;
+  std::atomic<std::uint64_t> node_version_{0};
+  bool dirty_ = false;
+  std::vector<std::array<int, 128>> node_by_id_;  ///< per bus: node-ID → node index (-1)
+
+  // PDO maps.
+  std::vector<std::vector<PdoMap>> pdo_work_, pdo_published_;
+  std::uint64_t pdo_version_ = 0;
+  std::int64_t next_pdo_refresh_us_ = 0;
+  bool pdo_dirty_ = false;
+
+  // Capture.
+  std::atomic<int> listeners_{0};
+  SpscRing<CapturedFrame> frames_{16384};
+  std::atomic<std::uint64_t> frames_dropped_{0};
+  std::vector<SignalInfo> signals_;
+  std::unique_ptr<SpscRing<SignalRow>> signal_rows_;
+  std::int64_t signal_period_us_ = 20000;
+  std::int64_t next_sample_us_ = 0;
+
+  std::vector<std::unique_ptr<BusTap>> taps_;
+  std::vector<std::unique_ptr<BusMaster>> masters_;
+  std::vector<std::unique_ptr<SdoJob>> sdo_jobs_;  ///< at most one per bus
+
+  std::vector<LiveFault> live_faults_;
+  int fault_ids_ = 0;
+};
+
+}  // namespace control

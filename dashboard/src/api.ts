@@ -1,0 +1,71 @@
+// The control-plane API (docs/api.md) as typed calls. Every call goes to the page's own origin.
+import type { ActiveFault, ClockState, Frame, NodeInfo, OdEntry, Scenario, SdoResult, SignalBatch } from './types';
+
+export class ApiError extends Error {
+  constructor(readonly status: number, message: string) {
+    super(message);
+  }
+}
+
+async function call<T>(method: string, path: string, body?: unknown): Promise<T> {
+  const res = await fetch(path, {
+    method,
+    headers: body === undefined ? {} : { 'Content-Type': 'application/json' },
+    body: body === undefined ? undefined : JSON.stringify(body),
+  });
+  const text = await res.text();
+  let parsed: unknown = undefined;
+  try {
+    parsed = text ? JSON.parse(text) : undefined;
+  } catch {
+    parsed = undefined;
+  }
+  if (!res.ok) {
+    const reason = (parsed as { error?: string } | undefined)?.error ?? (text || res.statusText);
+    throw new ApiError(res.status, `${res.status}: ${reason}`);
+  }
+  return parsed as T;
+}
+
+export const api = {
+  scenario: () => call<Scenario>('GET', '/api/scenario'),
+  nodes: () => call<NodeInfo[]>('GET', '/api/nodes'),
+  od: (node: string) => call<OdEntry[]>('GET', `/api/nodes/${encodeURIComponent(node)}/od`),
+  sdoWrite: (node: string, body: object) => call<SdoResult>('POST', `/api/nodes/${encodeURIComponent(node)}/sdo`, body),
+  sdoRead: (node: string, index: number, sub: number) =>
+    call<SdoResult>('GET', `/api/nodes/${encodeURIComponent(node)}/sdo?index=${index}&sub=${sub}`),
+  nmt: (command: string, node: string | 0) => call<{ ok: boolean }>('POST', '/api/nmt', { command, node }),
+  faults: () => call<ActiveFault[]>('GET', '/api/faults'),
+  injectFault: (fault: object) => call<{ ok: boolean; id: number; active?: boolean }>('POST', '/api/faults', fault),
+  clearFault: (id: number) => call<{ ok: boolean }>('DELETE', `/api/faults/${id}`),
+  setInput: (node: string, name: string, value: number) =>
+    call<{ ok: boolean }>('POST', `/api/nodes/${encodeURIComponent(node)}/inputs`, { name, value }),
+  clock: () => call<ClockState>('GET', '/api/clock'),
+  clockAction: (action: string, ms?: number) =>
+    call<ClockState | { ok: boolean }>('POST', '/api/clock', ms === undefined ? { action } : { action, ms }),
+};
+
+export interface StreamHandlers {
+  frames(batch: Frame[]): void;
+  nodes(nodes: NodeInfo[]): void;
+  signals(batch: SignalBatch): void;
+  clock(c: { t_us: number; paused: boolean; end_reached?: boolean }): void;
+  dropped(d: { frames: number }): void;
+  connection(open: boolean): void;
+}
+
+/** Opens the live stream; EventSource reconnects by itself after a drop. */
+export function openStream(signals: readonly string[], rateHz: number, h: StreamHandlers): EventSource {
+  const q = new URLSearchParams({ signals: signals.join(','), rate: String(rateHz) });
+  const es = new EventSource(`/api/events?${q}`);
+  const on = <T>(name: string, fn: (v: T) => void) =>
+    es.addEventListener(name, (ev) => fn(JSON.parse((ev as MessageEvent<string>).data) as T));
+  on('frames', h.frames);
+  on('nodes', h.nodes);
+  on('signals', h.signals);
+  on('clock', h.clock);
+  on('dropped', h.dropped);
+  es.onopen = () => h.connection(true);
+  es.onerror = () => h.connection(false);
+  return es;
+}

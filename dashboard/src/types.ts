@@ -1,0 +1,89 @@
+// The shapes of the control-plane API (docs/api.md, /API-CONTRACT.md): what the server sends.
+
+export type NmtState = 'INITIALISING' | 'PRE-OPERATIONAL' | 'OPERATIONAL' | 'STOPPED' | 'OFF';
+
+export interface Dsp408State {
+  profile: 'dsp408';
+  state: string;
+  control_word: number;
+  status_word: number;
+  last_transition: { from: string; to: string; control_word: number; t_us: number } | null;
+}
+export interface VtvpcdState { profile: 'vtvpcd'; state: string; faults: string[] }
+export interface Cia406State { profile: 'cia406'; operating_status: number; alarms: number; warnings: number }
+export interface GenericState { profile: 'generic' }
+export type DeviceState = Dsp408State | VtvpcdState | Cia406State | GenericState;
+
+export interface Emcy { t_us: number; code: number; register: number; data: string; text: string }
+
+export interface NodeInfo {
+  name: string;
+  node_id: number;
+  bus: string;
+  nmt: NmtState;
+  error_register: number;
+  device: DeviceState;
+  emcy: Emcy[];
+}
+
+export interface ScenarioNode {
+  name: string;
+  product: string;
+  variant: string;
+  node_id: number;
+  bus: string;
+  profile: 'dsp408' | 'vtvpcd' | 'cia406' | 'generic';
+}
+
+export interface Scenario {
+  name: string;
+  description: string;
+  clock: { mode: 'virtual' | 'realtime'; tick_us: number };
+  buses: { name: string; wire: string; bitrate: number }[];
+  nodes: ScenarioNode[];
+  signals: string[];
+  faults: {
+    device: { node: string; name: string; description: string }[];
+    wire: string[];
+    bus_off: string[];
+    power: string[];
+    plant: string[];
+  };
+  inputs: { node: string; name: string; unit?: string }[];
+}
+
+export interface OdEntry {
+  index: number;
+  sub: number;
+  name: string;
+  type: string;
+  access: 'rw' | 'ro' | 'wo' | 'const';
+  pdo_mappable: boolean;
+  value: number | string | null;
+}
+
+export interface SdoResult { ok: boolean; abort_code?: string; abort_text?: string; data?: string; value?: number }
+
+export interface Frame {
+  t_us: number;
+  bus: string;
+  id: number;
+  ext: boolean;
+  rtr: boolean;
+  dlc: number;
+  data: string;
+  dir: string;
+  service: string;
+  node: number | null;
+  text: string;
+  candump: string;
+}
+
+export interface ClockState {
+  mode: 'virtual' | 'realtime'; t_us: number; paused: boolean; tick_us: number;
+  speed?: number; end_reached?: boolean;
+}
+
+export interface ActiveFault { id: number; summary: string; since_t_us: number }
+
+export interface SignalBatch { t_us: number[]; values: Record<string, number[]> }

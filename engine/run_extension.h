@@ -1,0 +1,35 @@
+// A hook into a run for something that watches and steers it from outside the scenario (the
+// live control plane, control/): the runner calls it on the scheduler's thread between ticks, so
+// whatever it changes, it changes at a tick boundary. The engine knows nothing of HTTP.
+#pragma once
+
+namespace sim {
+class Scheduler;
+}
+
+namespace scenario {
+
+struct Scenario;
+class World;
+class FaultInjector;
+
+struct RunContext {
+  const Scenario& scenario;
+  World& world;
+  FaultInjector& faults;
+  sim::Scheduler& scheduler;
+};
+
+class RunExtension {
+ public:
+  virtual ~RunExtension() = default;
+  /// Once, after everything is built and before the nodes power on.
+  virtual void attach(const RunContext& context) = 0;
+  /// Before every tick. `end_reached`: the duration or the script says the run is over. Returns
+  /// false to end the run now; may hold the thread while the (virtual) clock is paused.
+  virtual bool before_tick(bool end_reached) = 0;
+  /// After the last tick (the outputs are not written yet).
+  virtual void detach() = 0;
+};
+
+}  // namespace scenario

@@ -1,0 +1,100 @@
+// A scenario running on its own thread with the control plane on an ephemeral loopback port, in
+// virtual time (started paused, as fast as possible when resumed), and an HTTP client for it.
+#pragma once
+
+#include <gtest/gtest.h>
+#include <httplib.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+
+#include "control/control_plane.h"
+#include "engine/environment.h"
+#include "engine/runner.h"
+#include "engine/scenario_loader.h"
+
+namespace vtest {
+
+class LivePlant {
+ public:
+  /// `scenario`: loaded by the caller; its script and duration are dropped (the test drives).
+  LivePlant(scenario::Scenario scenario, const scenario::Environment& env, std::size_t max_streams = 4)
+      : scenario_(std::move(scenario)) {
+    scenario_.script.clear();
+    scenario_.clock.duration.reset();
+    control::UiOptions u;
+    u.address = "127.0.0.1";
+    u.port = 0;
+    u.clock.start_paused = true;
+    u.clock.speed = 0;
+    u.max_streams = max_streams;
+    u.out = nullptr;
+    plane_ = std::make_unique<control::ControlPlane>(u);
+    const auto err = plane_->bind();
+    EXPECT_EQ(err, "");
+    out_ = std::tmpfile();
+    thread_ = std::thread([this, &env] {
+      scenario::RunOptions o;
+      o.quiet = true;
+      o.out = out_;
+      o.extension = plane_.get();
+      scenario::Runner runner(scenario_, env, o);
+      runner_ = &runner;
+      rc_ = runner.run();
+      runner_ = nullptr;
+    });
+    for (int i = 0; i < 500 && !plane_->bridge().attached(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    client_ = std::make_unique<httplib::Client>("127.0.0.1", plane_->port());
+    client_->set_read_timeout(10, 0);
+  }
+  ~LivePlant() {
+    for (int i = 0; i < 500 && !runner_; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    if (auto* r = runner_.load()) r->request_stop();
+    thread_.join();
+    plane_.reset();
+    std::fclose(out_);
+  }
+
+  httplib::Client& http() { return *client_; }
+  int port() const { return plane_->port(); }
+  control::ControlPlane& plane() { return *plane_; }
+
+  /// Body as JSON (fails the test when it is not JSON).
+  static nlohmann::json json_of(const httplib::Result& r) {
+    EXPECT_TRUE(r) << "no response";
+    if (!r) return {};
+    auto j = nlohmann::json::parse(r->body, nullptr, false);
+    EXPECT_FALSE(j.is_discarded()) << r->body;
+    return j;
+  }
+  httplib::Result post(const std::string& path, const nlohmann::json& body) {
+    return client_->Post(path.c_str(), body.dump(), "application/json");
+  }
+  /// Runs `ms` of simulated time and waits until the clock stands again.
+  void run_ms(int ms) {
+    const auto before = json_of(client_->Get("/api/clock"))["t_us"].get<std::int64_t>();
+    ASSERT_EQ(post("/api/clock", {{"action", "run"}, {"ms", ms}})->status, 200);
+    for (int i = 0; i < 3000; ++i) {
+      const auto c = json_of(client_->Get("/api/clock"));
+      if (c["paused"].get<bool>() && c["t_us"].get<std::int64_t>() >= before + ms * 1000) return;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    FAIL() << "the clock did not run " << ms << " ms";
+  }
+
+ private:
+  scenario::Scenario scenario_;
+  std::unique_ptr<control::ControlPlane> plane_;
+  std::thread thread_;
+  std::atomic<scenario::Runner*> runner_{nullptr};
+  std::atomic<int> rc_{-1};
+  std::FILE* out_ = nullptr;
+  std::unique_ptr<httplib::Client> client_;
+};
+
+}  // namespace vtest

@@ -1,0 +1,43 @@
+#include "dashboard/assets.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace {
+
+TEST(DashboardAssets, RootIsTheIndexPage) {
+  const dashboard::Asset* root = dashboard::find_asset("/");
+  ASSERT_NE(root, nullptr);
+  EXPECT_EQ(root->path, "/index.html");
+  EXPECT_EQ(root->content_type, "text/html; charset=utf-8");
+  EXPECT_NE(root->body.find("<!doctype html>"), std::string_view::npos);
+  EXPECT_EQ(dashboard::find_asset("/index.html"), root);
+}
+
+TEST(DashboardAssets, ThePageReferencesAssetsThatExist) {
+  const std::string_view html = dashboard::find_asset("/")->body;
+  for (const char* path : {"/assets/app.js", "/assets/app.css"}) {
+    EXPECT_NE(html.find(path), std::string_view::npos) << path;
+    const dashboard::Asset* a = dashboard::find_asset(path);
+    ASSERT_NE(a, nullptr) << path;
+    EXPECT_GT(a->body.size(), 100u) << path;
+  }
+  EXPECT_EQ(dashboard::find_asset("/assets/app.js")->content_type, "text/javascript; charset=utf-8");
+  EXPECT_EQ(dashboard::find_asset("/assets/app.css")->content_type, "text/css; charset=utf-8");
+}
+
+TEST(DashboardAssets, TheBodyIsTheWholeFileWithoutATerminator) {
+  const std::string_view html = dashboard::find_asset("/")->body;
+  EXPECT_EQ(html.substr(html.size() - 8), "</html>\n");
+}
+
+TEST(DashboardAssets, UnknownPathsAreNotFound) {
+  EXPECT_EQ(dashboard::find_asset(""), nullptr);
+  EXPECT_EQ(dashboard::find_asset("/nope.js"), nullptr);
+  EXPECT_EQ(dashboard::find_asset("/assets/"), nullptr);
+  EXPECT_EQ(dashboard::find_asset("index.html"), nullptr);
+  EXPECT_EQ(dashboard::find_asset("/assets/app.js/"), nullptr);
+}
+
+}  // namespace

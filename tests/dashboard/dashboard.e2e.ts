@@ -1,0 +1,291 @@
+// Browser end-to-end test of the dashboard in real headless Chromium (Debian's /usr/bin/chromium,
+// driven by playwright-core; no browser is ever downloaded). It starts
+//   vplant run scenarios/reference-plant.yaml --no-script --ui PORT
+// (virtual time), and, as a trainee would, from the page: sees five nodes, starts them by NMT,
+// drives the DSV to DEVICE_MODE_ACTIVE by writing its control word, sees the state highlight and
+// the decoded SDO in the trace, sees the cylinder plot rise, injects "magnet lost" on the HLT 1100
+// and reads the decoded EMCY, clears the fault, steps the virtual clock, and exports the trace.
+// Screenshots go to --screenshots DIR (and with --docs-images DIR also there, for docs/dashboard.md).
+//   node dashboard.e2e.cjs --vplant BIN --scenario FILE --screenshots DIR [--docs-images DIR]
+import assert from 'node:assert/strict';
+import { ChildProcess, spawn } from 'node:child_process';
+import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { createServer } from 'node:net';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { after, before, test } from 'node:test';
+import { BrowserContext, chromium, Page } from 'playwright-core';
+
+function option(name: string): string | undefined {
+  const i = process.argv.indexOf(name);
+  return i >= 0 ? process.argv[i + 1] : undefined;
+}
+const vplant = option('--vplant');
+const scenario = option('--scenario');
+const screenshots = option('--screenshots');
+const docsImages = option('--docs-images');
+if (!vplant || !scenario || !screenshots) {
+  console.error('usage: dashboard.e2e.cjs --vplant BIN --scenario FILE --screenshots DIR [--docs-images DIR]');
+  process.exit(2);
+}
+
+const CHROMIUM = '/usr/bin/chromium';
+const WAIT_MS = 20_000;
+// Below ctest's TIMEOUT: a hung run still kills the server it started instead of leaving it behind.
+const WATCHDOG_MS = 150_000;
+
+let server: ChildProcess | undefined;
+let serverLog = '';
+let context: BrowserContext | undefined;
+let page: Page;
+let profileDir = '';
+const pageErrors: string[] = [];
+
+function freePort(): Promise<number> {
+  return new Promise((resolve, reject) => {
+    const s = createServer();
+    s.once('error', reject);
+    s.listen(0, '127.0.0.1', () => {
+      const port = (s.address() as { port: number }).port;
+      s.close(() => resolve(port));
+    });
+  });
+}
+
+/** Starts vplant and resolves with the URL it prints when it is ready. */
+function startServer(port: number): Promise<string> {
+  return new Promise((resolve, reject) => {
+    const child = spawn(vplant!, ['run', scenario!, '--no-script', '--ui', String(port)], { stdio: ['ignore', 'pipe', 'pipe'] });
+    server = child;
+    const timer = setTimeout(() => reject(new Error(`vplant did not print its URL within 30 s:\n${serverLog}`)), 30_000);
+    const onData = (d: Buffer) => {
+      serverLog += d.toString();
+      const m = serverLog.match(/http:\/\/(127\.0\.0\.1|localhost):(\d+)\/?/);
+      if (m && Number(m[2]) === port) {
+        clearTimeout(timer);
+        resolve(`http://127.0.0.1:${port}/`);
+      }
+    };
+    child.stdout!.on('data', onData);
+    child.stderr!.on('data', onData);
+    child.once('exit', (code, signal) => {
+      clearTimeout(timer);
+      reject(new Error(`vplant exited (${code ?? signal}) before it served the page:\n${serverLog}`));
+    });
+  });
+}
+
+/** A screenshot of the viewport with the section `anchor` at the top (or the top of the page). */
+async function shot(name: string, anchor?: string): Promise<void> {
+  await page.evaluate((id) => (id ? document.getElementById(id)?.scrollIntoView() : window.scrollTo(0, 0)), anchor);
+  await page.waitForTimeout(300);  // a plot redraw (5 per second) after the scroll
+  const file = join(screenshots!, `${name}.png`);
+  await page.screenshot({ path: file, fullPage: false });
+  if (docsImages) copyFileSync(file, join(docsImages, `dashboard-${name}.png`));
+}
+
+const byTestId = (id: string) => page.getByTestId(id);
+
+// The reference plant lasts 6 s; with --ui the virtual clock pauses there (end_reached) and Resume
+// goes on. Like a trainer, the test resumes it whenever that happens, except in the clock test.
+let autoResume = true;
+let resuming: Promise<unknown> = Promise.resolve();
+const resumer = setInterval(() => {
+  if (!autoResume || !page) return;
+  resuming = page.evaluate(async () => {
+    const c = await (await fetch('/api/clock')).json();
+    if (c.paused && c.end_reached) {
+      await fetch('/api/clock', { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{"action":"resume"}' });
+    }
+  }).catch(() => undefined);
+}, 250);
+
+function killServer(): void {
+  if (server && server.exitCode === null && server.signalCode === null) server.kill('SIGKILL');
+}
+process.on('exit', killServer);
+for (const sig of ['SIGINT', 'SIGTERM'] as const) process.on(sig, () => { killServer(); process.exit(1); });
+setTimeout(() => {
+  console.error(`dashboard e2e: no end after ${WATCHDOG_MS / 1000} s; server log:\n${serverLog}`);
+  killServer();
+  process.exit(1);
+}, WATCHDOG_MS).unref();
+
+before(async () => {
+  mkdirSync(screenshots!, { recursive: true });
+  if (docsImages) mkdirSync(docsImages, { recursive: true });
+  const port = await freePort();
+  const url = await startServer(port);
+  profileDir = mkdtempSync(join(tmpdir(), 'vplant-chromium-'));
+  // A fresh profile each run (playwright passes it as --user-data-dir).
+  context = await chromium.launchPersistentContext(profileDir, {
+    executablePath: CHROMIUM,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+      '--disable-sync', '--no-first-run'],
+    viewport: { width: 1400, height: 1000 },
+    acceptDownloads: true,
+  });
+  context.setDefaultTimeout(WAIT_MS);
+  page = context.pages()[0] ?? await context.newPage();
+  page.on('pageerror', (e) => pageErrors.push(e.message));
+  await page.goto(url);
+});
+
+after(async () => {
+  clearInterval(resumer);
+  // What the page showed last, for a failed run: its screenshot and its status line.
+  if (page) {
+    await page.screenshot({ path: join(screenshots!, 'final.png'), fullPage: true }).catch(() => undefined);
+    console.log(`page status line: ${await byTestId('messages').textContent().catch(() => '?')}`);
+  }
+  await context?.close();
+  if (server && server.exitCode === null) {
+    server.kill('SIGTERM');
+    await new Promise<void>((resolve) => {
+      const t = setTimeout(() => { server!.kill('SIGKILL'); resolve(); }, 5000);
+      server!.once('exit', () => { clearTimeout(t); resolve(); });
+    });
+  }
+  if (profileDir) rmSync(profileDir, { recursive: true, force: true });
+});
+
+test('the page shows the five nodes of the reference plant', async () => {
+  await page.waitForSelector('[data-testid=node-table] tbody tr');
+  assert.equal(await page.locator('[data-testid=node-table] tbody tr').count(), 5);
+  for (const name of ['vtvpcd', 'dsv', 'md2', 'hlt', 'wdga']) await byTestId(`node-row-${name}`).waitFor();
+  await page.waitForFunction(() => document.querySelector('[data-testid=connection]')?.textContent === 'live');
+  // With --ui, virtual time may start paused (the trainer starts it): start it from the page.
+  await page.waitForFunction(() => ['paused', 'running'].includes(document.querySelector('[data-testid=clock-state]')?.textContent ?? ''));
+  if ((await byTestId('clock-state').textContent()) === 'paused') await byTestId('clock-resume').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
+  await page.waitForFunction(() => document.querySelector('[data-testid=nmt-dsv]')?.textContent === 'PRE-OPERATIONAL');
+  assert.deepEqual(pageErrors, []);
+  await shot('overview-preop');
+});
+
+test('NMT start from the page brings every node to OPERATIONAL', async () => {
+  await byTestId('nmt-target').selectOption('');
+  await byTestId('nmt-start').click();
+  for (const name of ['vtvpcd', 'dsv', 'md2', 'hlt', 'wdga']) {
+    await page.waitForFunction((n) => document.querySelector(`[data-testid=nmt-${n}]`)?.textContent === 'OPERATIONAL', name);
+  }
+  await byTestId('node-row-dsv').click();
+  await page.waitForSelector('[data-testid=diagram-nmt] [data-state=OPERATIONAL][data-current=true]');
+  // The trace decodes the NMT command the page sent.
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=NMT] td.decoded')]
+    .some((td) => /start/i.test(td.textContent ?? '')));
+});
+
+test('control word 0x0007 by SDO drives the DSV to DEVICE_MODE_ACTIVE', async () => {
+  await byTestId('node-row-dsv').click();
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=INIT][data-current=true]');
+  await byTestId('cw-preset-0x0007').click();
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=DEVICE_MODE_ACTIVE][data-current=true]');
+  assert.equal(await page.locator('[data-testid=diagram-dsp408] .state.current').count(), 1);
+  await page.waitForFunction(() => /→ DEVICE_MODE_ACTIVE.*0x0007/.test(document.querySelector('[data-testid=device-last-transition]')?.textContent ?? ''));
+  assert.ok(await page.locator('[data-testid=diagram-dsp408] .edge.last').count() >= 1, 'the last transition is drawn');
+  await page.waitForFunction(() => /DEVICE_MODE_ACTIVE/.test(document.querySelector('[data-testid=device-dsv]')?.textContent ?? ''));
+  // The SDO download and its response, decoded with the object's name.
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td.decoded')]
+    .some((td) => /6040:00/.test(td.textContent ?? '') && /control ?word/i.test(td.textContent ?? '')));
+  await shot('dsv-active', 'detail-section');
+});
+
+test('an SDO write the node refuses shows the abort code and its text', async () => {
+  // 6300h:01 (vpoc set point) is an INTEGER16 limited to -16384..16384: 20000 fits the type, so it
+  // goes on the bus, and the DSV answers with an abort.
+  await byTestId('node-row-dsv').click();
+  await byTestId('od-filter').fill('6300');
+  await byTestId('od-input-6300-01').fill('20000');
+  await byTestId('od-write-6300-01').click();
+  await page.waitForFunction(() => /refused: abort 0x0609003[0-2] \S/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td.decoded')]
+    .some((td) => /abort/i.test(td.textContent ?? '') && /0609003[0-2]/.test(td.textContent ?? '')));
+  await byTestId('od-filter').fill('');
+});
+
+test('the cylinder plot rises when the pump delivers and the DSV opens', async () => {
+  const position = () => page.evaluate(() => {
+    const el = document.querySelector('[data-testid="plot-value-cyl.position"]');
+    const m = (el?.textContent ?? '').match(/= (-?[\d.e+-]+)/);
+    return m ? Number(m[1]) : NaN;
+  });
+  await page.waitForFunction(() => /= /.test(document.querySelector('[data-testid="plot-value-cyl.position"]')?.textContent ?? ''));
+  const start = await position();
+  // Pump swivel angle command 50 % (VT-VPCD 2C72h), through the object-dictionary browser.
+  await byTestId('node-row-vtvpcd').click();
+  await byTestId('od-filter').fill('2c72');
+  await byTestId('od-input-2C72-00').fill('16384');
+  await byTestId('od-write-2C72-00').click();
+  await page.waitForFunction(() => /done/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
+  // DSV spool set point 50 % (6300h:01), likewise.
+  await byTestId('node-row-dsv').click();
+  await byTestId('od-filter').fill('6300');
+  await byTestId('od-input-6300-01').fill('8192');
+  await byTestId('od-write-6300-01').click();
+  await page.waitForFunction(() => /6300:01.*done/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
+  await page.waitForFunction((s) => {
+    const m = (document.querySelector('[data-testid="plot-value-cyl.position"]')?.textContent ?? '').match(/= (-?[\d.e+-]+)/);
+    return m !== null && Number(m[1]) > s + 0.05;
+  }, start, { timeout: 30_000 });
+  await byTestId('od-filter').fill('');
+  await shot('cylinder-rising', 'plots-section');
+});
+
+test('"magnet lost" on the HLT 1100: the decoded EMCY, then the fault cleared', async () => {
+  await byTestId('node-row-hlt').click();
+  await byTestId('fault-inject-hlt-magnet_lost').click();
+  await page.waitForSelector('[data-testid=active-faults] [data-testid^=active-fault-]');
+  await page.waitForFunction(() => (document.querySelector('[data-testid=emcy-hlt]')?.textContent ?? '') !== '');
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=EMCY] td.decoded')]
+    .some((td) => /EMCY/.test(td.textContent ?? '')));
+  const emcyText = await page.locator('[data-testid=trace-table] tbody tr[data-service=EMCY] td.decoded').first().textContent();
+  assert.match(emcyText ?? '', /EMCY/);
+  await page.waitForSelector('[data-testid=emcy-list] li');
+  await shot('hlt-magnet-lost');
+  await byTestId('trace-service-EMCY').waitFor();
+  await shot('trace-emcy', 'trace-section');
+  await page.locator('[data-testid^=fault-clear-]').first().click();
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid=active-faults] [data-testid^=active-fault-]').length === 0);
+});
+
+test('the trace filters by node and service and exports what it shows as a candump log', async () => {
+  // Only the HLT 1100 (node 5): every row shown is node 5 or a broadcast.
+  for (const id of [63, 2, 3, 127]) await byTestId(`trace-node-${id}`).uncheck();
+  await byTestId('trace-pause').click();
+  await page.waitForTimeout(400);
+  const nodes = await page.locator('[data-testid=trace-table] tbody tr td:nth-child(6)').allTextContents();
+  assert.ok(nodes.length > 0);
+  assert.ok(nodes.every((n) => n === '' || n === '5'), `nodes shown: ${[...new Set(nodes)].join(',')}`);
+  const [download] = await Promise.all([page.waitForEvent('download'), byTestId('trace-export').click()]);
+  const log = readFileSync((await download.path())!, 'utf8').trimEnd().split('\n');
+  assert.ok(log.length > 0);
+  for (const line of log) assert.match(line, /^\(\d+\.\d{6}\) main [0-9A-F]{3}#([0-9A-F]*|R)$/);
+  for (const line of log) {
+    const id = parseInt(line.split(' ')[2].split('#')[0], 16);
+    const broadcast = [0x000, 0x080, 0x100, 0x7e4, 0x7e5].includes(id);
+    assert.ok(broadcast || (id & 0x7f) === 5, `a frame of another node in the export: ${line}`);
+  }
+  await byTestId('trace-pause').click();
+  for (const id of [63, 2, 3, 127]) await byTestId(`trace-node-${id}`).check();
+});
+
+test('virtual time under the trainer: pause, one tick, run 100 ms, resume', async () => {
+  autoResume = false;
+  await resuming;  // a resume already on its way must not undo the pause below
+  const now = () => page.evaluate(async () => (await (await fetch('/api/clock')).json()) as { t_us: number; paused: boolean; tick_us: number });
+  await byTestId('clock-pause').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'paused');
+  const t0 = await now();
+  assert.equal(t0.paused, true);
+  await page.waitForTimeout(300);
+  assert.equal((await now()).t_us, t0.t_us, 'paused time stands still');
+  await byTestId('clock-step').click();
+  await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t), t0.t_us + t0.tick_us);
+  await byTestId('clock-run-ms').fill('100');
+  await byTestId('clock-run').click();
+  await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t && c.paused), t0.t_us + t0.tick_us + 100_000);
+  await byTestId('clock-resume').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
+  assert.deepEqual(pageErrors, []);
+});
