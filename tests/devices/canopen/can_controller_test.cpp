@@ -25,9 +25,10 @@ struct BitErrors : sim::FrameFilter {
   }
 };
 
-std::ptrdiff_t find_frame(const Frames& frames, std::uint32_t id, std::uint8_t b0, std::uint8_t b1) {
+// The first frame `id` whose data starts with `prefix`; -1 if none.
+std::ptrdiff_t find_frame(const Frames& frames, std::uint32_t id, std::vector<std::uint8_t> prefix) {
   const auto it = std::find_if(frames.begin(), frames.end(), [&](const Frame& f) {
-    return f.id == id && f.data.size() >= 2 && f.data[0] == b0 && f.data[1] == b1;
+    return f.id == id && f.data.size() >= prefix.size() && std::equal(prefix.begin(), prefix.end(), f.data.begin());
   });
   return it == frames.end() ? -1 : it - frames.begin();
 }
@@ -52,12 +53,12 @@ TEST(CanController, ErrorPassiveSendsEmcy8120AndErrorActiveClearsIt) {
   h.bus().set_filter(&errors);
   h.run_ms(15);
   const auto frames = h.take();
-  const auto hb = find_frame(frames, 0x705, 0x7F, 0);
-  const auto passive = find_frame(frames, 0x085, 0x20, 0x81);
+  const auto hb = find_frame(frames, 0x705, {0x7F});
+  const auto passive = find_frame(frames, 0x085, {0x20, 0x81});
   ASSERT_GE(hb, 0);
   ASSERT_GT(passive, hb) << ::testing::PrintToString(frames);
   EXPECT_EQ(frames[static_cast<std::size_t>(passive)].data[2], 0x11);  // generic + communication
-  const auto cleared = find_frame(frames, 0x085, 0x00, 0x00);
+  const auto cleared = find_frame(frames, 0x085, {0x00, 0x00});
   EXPECT_GT(cleared, passive);
   EXPECT_EQ(h.bus().stats().error_frames, 16u);
   EXPECT_EQ(h.bus().counters(h.node().endpoint()).state, sim::ErrorState::Active);
@@ -85,9 +86,9 @@ TEST(CanController, BusOffSilencesTheNodeAndRecoverySendsEmcy8140) {
   EXPECT_FALSE(h.node().bus_off());
   h.run_ms(20);
   const auto frames = h.take();
-  const auto recovered = find_frame(frames, 0x085, 0x40, 0x81);
+  const auto recovered = find_frame(frames, 0x085, {0x40, 0x81});
   ASSERT_GE(recovered, 0) << ::testing::PrintToString(frames);
-  EXPECT_GT(find_frame(frames, 0x705, 0x7F, 0), recovered);
+  EXPECT_GT(find_frame(frames, 0x705, {0x7F}), recovered);
   EXPECT_EQ(h.bus().counters(h.node().endpoint()).bus_off_events, 1u);
 }
 
