@@ -63,18 +63,20 @@ script:
 }
 
 TEST(BusTimingScenario, LoadSignalFollowsTheSyncRate) {
-  // SYNC (50 bits) + TPDO1 of the axis node every 1 ms at 125 kbit/s: a load well above 0.5.
+  // SYNC (51 bits) and the axis node's TPDO1 (85 bits) every 5 ms at 125 kbit/s: 136 of 625
+  // bits, 0.218; 19 to 20 cycles fall into the 100 ms window: 0.20 to 0.22.
   const auto r = run_text(kBus125k + kMachine + R"(
 script:
   - wait: 10ms
   - nmt: start
   - expect: {signal: bus.main.load, below: 0.05}
-  - sync: 1ms
+  - sync: 5ms
   - wait: 200ms
-  - expect: {signal: bus.main.load, between: [0.5, 1.0], during: 100ms}
+  - expect: {signal: bus.main.load, between: [0.20, 0.22], during: 100ms}
+  - wait: 100ms
   - sync: off
   - wait: 150ms
-  - expect: {signal: bus.main.load, below: 0.01}
+  - expect: {signal: bus.main.load, value: 0, tolerance: 0}
 )");
   EXPECT_EQ(r.rc, 0) << r.failure_text() << r.output;
 }
