@@ -32,7 +32,8 @@ void FaultInjector::check(const FaultSpec& f) {
       [&](const auto& a) {
         using T = std::decay_t<decltype(a)>;
         if constexpr (std::is_same_v<T, WireFault>) {
-          if (world_.bus_index(a.bus) < 0) throw LoadError(f.mark, "fault: unknown bus '" + a.bus + "'");
+          if (a.kind == WireFault::Kind::TxError) need_node(a.node);
+          else if (world_.bus_index(a.bus) < 0) throw LoadError(f.mark, "fault: unknown bus '" + a.bus + "'");
         } else if constexpr (std::is_same_v<T, BusOff> || std::is_same_v<T, Power>) {
           need_node(a.node);
         } else if constexpr (std::is_same_v<T, DeviceFault>) {
@@ -70,8 +71,14 @@ FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now)
       [&](const auto& a) {
         using T = std::decay_t<decltype(a)>;
         if constexpr (std::is_same_v<T, WireFault>) {
-          auto* filter = filters_[static_cast<std::size_t>(world_.bus_index(a.bus))].get();
-          const int handle = filter->add(a);
+          int bus = world_.bus_index(a.bus);
+          WireFault rule = a;
+          if (a.kind == WireFault::Kind::TxError) {  // the node's own bus and endpoint
+            bus = node(a.node).bus;
+            rule.endpoint = node(a.node).device->node().endpoint();
+          }
+          auto* filter = filters_[static_cast<std::size_t>(bus)].get();
+          const int handle = filter->add(rule);
           clear = [filter, handle](sim::Time) { filter->remove(handle); };
         } else if constexpr (std::is_same_v<T, BusOff>) {
           auto& n = node(a.node);

@@ -6,6 +6,7 @@
 
 #include "sim/scheduler.h"
 #include "sim/trace_writer.h"
+#include "engine/bus_report.h"
 #include "engine/fault_injector.h"
 #include "engine/junit_writer.h"
 #include "engine/node_group.h"
@@ -216,7 +217,8 @@ int Runner::run() {
   s.max_lateness_us = sched.stats().max_lateness.count();
   for (std::size_t i = 0; i < m.world->buses().size(); ++i) {
     const auto& bus = *m.world->buses()[i];
-    s.buses.push_back({bus.name(), bus.transport() ? std::string(bus.transport()->name()) : "virtual", bus.stats().frames});
+    s.buses.push_back({bus.name(), bus.transport() ? std::string(bus.transport()->name()) : "virtual", bus.stats().frames,
+                       describe_bus_load(bus, sim::seconds(sched.now())), bus.stats().busy_bits, bus.timing_bit_rate()});
   }
   s.assertions = m.verdicts.outcomes().size();
   s.failures = m.verdicts.failures();
@@ -241,8 +243,10 @@ int Runner::run() {
     std::fprintf(out, "vplant run: %s: %.3f s simulated in %.3f s wall (%.0f× real time)%s\n", m.scenario.name.c_str(),
                  s.simulated_s, s.wall_s, s.wall_s > 0 ? s.simulated_s / s.wall_s : 0.0,
                  s.interrupted ? ", interrupted" : "");
-    for (const auto& b : s.buses)
+    for (const auto& b : s.buses) {
       std::fprintf(out, "  bus %s (%s): %llu frames\n", b.name.c_str(), b.wire.c_str(), static_cast<unsigned long long>(b.frames));
+      std::fputs(b.load.c_str(), out);
+    }
     std::fprintf(out, "  nodes: %zu, faults injected: %zu, ticks: %llu", m.world->nodes().size(), s.faults,
                  static_cast<unsigned long long>(s.ticks));
     if (realtime)

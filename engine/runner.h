@@ -55,6 +55,9 @@ struct RunSummary {
   struct BusFrames {
     std::string name, wire;
     std::uint64_t frames = 0;
+    std::string load;  ///< timing, load, load per COB-ID (engine/bus_report.h)
+    std::uint64_t busy_bits = 0;  ///< bits the frames and error frames occupied
+    std::uint32_t bit_rate = 0;   ///< the rate the bus was timed at
   };
   std::vector<BusFrames> buses;
   std::size_t assertions = 0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "devices/canopen/nmt_state.h"
+#include "sim/bus.h"
 #include "sim/can_frame.h"
 #include "sim/time.h"
 #include "engine/condition.h"
@@ -27,7 +28,11 @@ namespace scenario {
 struct BusSpec {
   std::string name;
   std::string iface;  ///< "" = the in-process virtual bus; else a SocketCAN interface or a socketcand spec
-  std::uint32_t bitrate = 500000;  ///< bit/s (documentation of the wire; the virtual bus has no timing)
+  std::uint32_t bitrate = 500000;  ///< bit/s: the virtual bus times frames at this rate
+  /// `bit` (default): the virtual bus gives every frame its bit time (sim::BusTiming::Bit);
+  /// `ideal`: zero-time delivery. A SocketCAN bus is always ideal: the real wire times it.
+  sim::BusTiming timing = sim::BusTiming::Bit;
+  std::size_t tx_queue = sim::Bus::kDefaultTxQueue;  ///< per-endpoint transmit queue depth
   SourceMark mark;
 };
 
@@ -113,7 +118,11 @@ struct UiSpec {
 struct WireFault {
   std::string bus;  ///< "" = first bus
   FramePattern match;
-  enum class Kind { Drop, Delay, Corrupt } kind = Kind::Drop;
+  /// TxError: every transmission attempt of `node` is destroyed by a bit error (error frame,
+  /// fault confinement counters, automatic retransmission); `match` is not used.
+  enum class Kind { Drop, Delay, Corrupt, TxError } kind = Kind::Drop;
+  std::string node;   ///< TxError: the transmitting node
+  int endpoint = -1;  ///< TxError: its endpoint on the bus (resolved when applied)
   sim::Duration delay{0};
   int byte = 0;              ///< Corrupt: which data byte
   std::uint8_t xor_mask = 0xFF;

@@ -42,6 +42,13 @@ std::vector<BusSpec> read_buses(const YAML::Node& seq, const std::string& file) 
         throw LoadError(mark_of(br, file), "bitrate: " + std::to_string(v) + " is not a CiA 301 bit rate (10k..1M)");
       b.bitrate = static_cast<std::uint32_t>(v);
     }
+    if (auto t = r.get("timing")) {
+      const auto text = read_string(t, file, "timing");
+      if (text == "bit") b.timing = sim::BusTiming::Bit;
+      else if (text == "ideal") b.timing = sim::BusTiming::Ideal;
+      else throw LoadError(mark_of(t, file), "timing: '" + text + "' is neither 'bit' nor 'ideal'");
+    }
+    if (auto q = r.get("tx_queue")) b.tx_queue = static_cast<std::size_t>(read_integer(q, file, "tx_queue", 1, 4096));
     r.finish();
     buses.push_back(std::move(b));
   }
@@ -271,7 +278,10 @@ Scenario parse_scenario(const std::string& text, const std::string& file, const 
   if (auto b = r.get("buses")) {
     s.buses = read_buses(b, file);
   } else {
-    s.buses.push_back(BusSpec{"main", "", 500000, r.mark()});
+    BusSpec main;
+    main.name = "main";
+    main.mark = r.mark();
+    s.buses.push_back(main);
   }
   if (auto n = r.get("nodes")) s.nodes = read_nodes(n, file, dir, s.buses);
   if (auto p = r.get("plant")) {

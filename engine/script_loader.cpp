@@ -96,9 +96,20 @@ void read_sdo_target(MapReader& r, const std::string& file, SdoTarget& t) {
 std::string where(const SdoTarget& t) { return describe(t.node) + " " + hex(t.index, 4) + ":" + hex(t.sub, 2).substr(2); }
 
 FaultAction read_fault_action(MapReader& r, const std::string& file, std::string& summary) {
-  const auto kind = r.one_of({"drop", "delay", "corrupt", "bus_off", "device_fault", "power_off", "power_on",
-                              "power_cycle", "reset", "plant"});
+  const auto kind = r.one_of({"drop", "delay", "corrupt", "tx_errors", "bus_off", "device_fault", "power_off",
+                              "power_on", "power_cycle", "reset", "plant"});
   const auto v = r.get(kind);
+  if (kind == "tx_errors") {
+    MapReader wr(v, file, kind);
+    WireFault w;
+    w.kind = WireFault::Kind::TxError;
+    w.node = read_name(wr.require("node"), file, "node");
+    if (auto p = wr.get("probability")) w.probability = read_number(p, file, "probability", 0.0, 1.0);
+    if (auto c = wr.get("count")) w.count = static_cast<std::uint64_t>(read_integer(c, file, "count", 1, INT64_MAX));
+    wr.finish();
+    summary = "tx_errors " + w.node + (w.count ? " x" + std::to_string(w.count) : "");
+    return w;
+  }
   if (kind == "drop" || kind == "delay" || kind == "corrupt") {
     MapReader wr(v, file, kind);
     WireFault w;

@@ -59,4 +59,26 @@ Signal Signal::nmt_state(const canopen::Node* node, double scale, double offset,
   return s;
 }
 
+Signal Signal::bus_load(const sim::Bus* bus, double scale, double offset, std::string name) {
+  Signal s;
+  s.kind_ = Kind::BusLoad;
+  s.bus_ = bus;
+  s.scale_ = scale;
+  s.offset_ = offset;
+  s.name_ = std::move(name);
+  return s;
+}
+
+Signal Signal::bus_counter(const sim::Bus* bus, int endpoint, Counter counter, double scale, double offset, std::string name) {
+  Signal s;
+  s.kind_ = Kind::BusCounter;
+  s.bus_ = bus;
+  s.endpoint_ = endpoint;
+  s.counter_ = counter;
+  s.scale_ = scale;
+  s.offset_ = offset;
+  s.name_ = std::move(name);
+  return s;
+}
+
 }  // namespace scenario

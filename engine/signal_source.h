@@ -40,6 +40,12 @@ class Signal {
   static Signal port(const double* value, double scale, double offset, std::string name);
   static Signal frame(const FrameFieldStore* store, int slot, FrameField field, double scale, double offset, std::string name);
   static Signal nmt_state(const canopen::Node* node, double scale, double offset, std::string name);
+  /// `bus.NAME.load`: sim::Bus::load(), the occupied fraction of the last 100 ms.
+  static Signal bus_load(const sim::Bus* bus, double scale, double offset, std::string name);
+  /// `bus.NAME.NODE.tec|rec|error_state`: the fault confinement counters of an endpoint
+  /// (error_state: 0 active, 1 passive, 2 bus-off).
+  enum class Counter { Tec, Rec, State };
+  static Signal bus_counter(const sim::Bus* bus, int endpoint, Counter counter, double scale, double offset, std::string name);
 
   double value() const {
     double v;
@@ -51,6 +57,12 @@ class Signal {
         break;
       }
       case Kind::Nmt: v = static_cast<double>(node_->powered() ? static_cast<int>(node_->nmt_state()) : 0); break;
+      case Kind::BusLoad: v = bus_->load(); break;
+      case Kind::BusCounter: {
+        const auto& c = bus_->counters(endpoint_);
+        v = counter_ == Counter::Tec ? c.tec : counter_ == Counter::Rec ? c.rec : static_cast<double>(static_cast<int>(c.state));
+        break;
+      }
       default: v = std::numeric_limits<double>::quiet_NaN();
     }
     v = v * scale_ + offset_;
@@ -62,7 +74,10 @@ class Signal {
   const std::string& name() const { return name_; }
 
  private:
-  enum class Kind { None, Port, Frame, Nmt } kind_ = Kind::None;
+  enum class Kind { None, Port, Frame, Nmt, BusLoad, BusCounter } kind_ = Kind::None;
+  const sim::Bus* bus_ = nullptr;
+  int endpoint_ = 0;
+  Counter counter_ = Counter::Tec;
   const double* value_ = nullptr;
   const FrameFieldStore* store_ = nullptr;
   int slot_ = 0;

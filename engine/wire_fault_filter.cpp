@@ -14,7 +14,7 @@ void WireFaultFilter::remove(int handle) {
 sim::FrameFilter::Verdict WireFaultFilter::on_send(sim::CanFrame& frame, int, sim::Time) {
   Verdict v;
   for (auto& r : rules_) {
-    if (!r.active || !r.fault.match.matches(frame)) continue;
+    if (!r.active || r.fault.kind == WireFault::Kind::TxError || !r.fault.match.matches(frame)) continue;
     if (r.fault.count != 0 && r.affected >= r.fault.count) continue;
     if (r.fault.probability < 1.0 && random_->uniform() >= r.fault.probability) continue;
     ++r.affected;
@@ -25,6 +25,7 @@ sim::FrameFilter::Verdict WireFaultFilter::on_send(sim::CanFrame& frame, int, si
       case WireFault::Kind::Delay:
         v.delay += r.fault.delay;
         break;
+      case WireFault::Kind::TxError: break;
       case WireFault::Kind::Corrupt:
         if (r.fault.byte < frame.dlc && !frame.rtr) {
           auto& b = frame.data[static_cast<std::size_t>(r.fault.byte)];
@@ -36,6 +37,18 @@ sim::FrameFilter::Verdict WireFaultFilter::on_send(sim::CanFrame& frame, int, si
     }
   }
   return v;
+}
+
+bool WireFaultFilter::on_transmit(const sim::CanFrame&, int from_endpoint, sim::Time) {
+  bool destroyed = false;
+  for (auto& r : rules_) {
+    if (!r.active || r.fault.kind != WireFault::Kind::TxError || r.fault.endpoint != from_endpoint) continue;
+    if (r.fault.count != 0 && r.affected >= r.fault.count) continue;
+    if (r.fault.probability < 1.0 && random_->uniform() >= r.fault.probability) continue;
+    ++r.affected;
+    destroyed = true;
+  }
+  return destroyed;
 }
 
 }  // namespace scenario

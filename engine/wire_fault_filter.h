@@ -1,5 +1,6 @@
 // Wire faults on one bus (a sim::FrameFilter): frames matching a rule are dropped, delayed or
-// corrupted as they are sent, optionally with a probability and up to a count. Rules are added
+// corrupted as they are sent, or a node's transmission attempts are destroyed by bit errors
+// (tx_errors), optionally with a probability and up to a count. Rules are added
 // and removed by the fault injector; no allocation per frame.
 #pragma once
 
@@ -22,6 +23,8 @@ class WireFaultFilter final : public sim::FrameFilter {
   std::uint64_t affected(int handle) const { return rules_[static_cast<std::size_t>(handle)].affected; }
 
   Verdict on_send(sim::CanFrame& frame, int from_endpoint, sim::Time now) override;
+  /// tx_errors rules: a bit error destroys this transmission attempt of the rule's node.
+  bool on_transmit(const sim::CanFrame& frame, int from_endpoint, sim::Time start) override;
 
  private:
   struct Rule {

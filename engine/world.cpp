@@ -53,6 +53,9 @@ void World::build_buses(const BuildOptions& options) {
     std::string iface = spec.iface;
     if (auto it = options.can.find(spec.name); it != options.can.end()) iface = it->second;
     auto bus = std::make_unique<sim::Bus>(spec.name);
+    // A SocketCAN bus is timed by the real wire; only the in-process bus needs the model.
+    bus->set_timing(iface.empty() ? spec.timing : sim::BusTiming::Ideal, spec.bitrate);
+    bus->set_tx_queue_depth(spec.tx_queue);
     if (!iface.empty()) {
       std::string error;
       auto transport = sim::open_transport(spec.name, iface, error);
@@ -208,6 +211,7 @@ Signal World::resolve_term(const SignalExpr& e) {
     const int slot = frame_fields_.slot(bus, e.frame.id, e.frame.extended);
     return Signal::frame(&frame_fields_, slot, e.frame, e.scale, e.offset, e.text);
   }
+  if (e.owner == "bus" && !find_node("bus")) return resolve_bus_signal(e);
   if (e.port == "nmt_state") {
     if (auto* n = find_node(e.owner)) {
       if (!sim::find_port(n->ports, "nmt_state")) return Signal::nmt_state(&n->device->node(), e.scale, e.offset, e.text);
@@ -215,6 +219,29 @@ Signal World::resolve_term(const SignalExpr& e) {
   }
   const auto ref = find_port(e.qualified_port(), e.mark);
   return Signal::port(ref.port->value, e.scale, e.offset, e.text);
+}
+
+Signal World::resolve_bus_signal(const SignalExpr& e) {
+  // bus.NAME.load | bus.NAME.NODE.tec | .rec | .error_state
+  const auto dot = e.port.find('.');
+  const std::string bus_name = e.port.substr(0, dot);
+  const int bus = dot == std::string::npos ? -1 : bus_index(bus_name);
+  if (bus < 0 || bus_name.empty())
+    throw LoadError(e.mark, "signal '" + e.text + "': expected bus.NAME.load or bus.NAME.NODE.tec|rec|error_state with a known bus");
+  const auto* b = buses_[static_cast<std::size_t>(bus)].get();
+  const std::string rest = e.port.substr(dot + 1);
+  if (rest == "load") return Signal::bus_load(b, e.scale, e.offset, e.text);
+  const auto dot2 = rest.find('.');
+  const std::string node_name = rest.substr(0, dot2);
+  const std::string what = dot2 == std::string::npos ? "" : rest.substr(dot2 + 1);
+  auto* n = find_node(node_name);
+  if (!n || n->bus != bus) throw LoadError(e.mark, "signal '" + e.text + "': no node '" + node_name + "' on bus '" + bus_name + "'");
+  Signal::Counter c = Signal::Counter::Tec;
+  if (what == "tec") c = Signal::Counter::Tec;
+  else if (what == "rec") c = Signal::Counter::Rec;
+  else if (what == "error_state") c = Signal::Counter::State;
+  else throw LoadError(e.mark, "signal '" + e.text + "': a node's bus signal is tec, rec or error_state");
+  return Signal::bus_counter(b, n->device->node().endpoint(), c, e.scale, e.offset, e.text);
 }
 
 std::vector<SignalExpr> World::wired_signals() const {

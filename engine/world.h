@@ -69,6 +69,7 @@ class World {
   void build_wires();
   PortRef find_port(const std::string& qualified, const SourceMark& mark) const;
   Signal resolve_term(const SignalExpr& e);
+  Signal resolve_bus_signal(const SignalExpr& e);
 
   const Scenario& scenario_;
   Random random_;

@@ -1,7 +1,9 @@
 #include "sim/bus.h"
 
 #include <algorithm>
+#include <limits>
 
+#include "sim/can_bit_timing.h"
 #include "sim/log.h"
 
 namespace sim {
@@ -10,25 +12,54 @@ namespace {
 // A tick in which more than this many frames are delivered is a runaway feedback loop between
 // endpoints (e.g. two nodes answering each other); stop it rather than hang the scheduler.
 constexpr std::size_t kMaxFramesPerDelivery = 100000;
+// ISO 11898-1 fault confinement.
+constexpr unsigned kPassiveLimit = 128;
+constexpr unsigned kBusOffLimit = 255;
+constexpr unsigned kRecoverySequences = 128;
+constexpr unsigned kSuspendTransmissionBits = 8;
+constexpr unsigned kRecAfterPassiveSuccess = 119;  // "a value between 119 and 127"
+
+std::int64_t ns_of(Time t) { return t.time_since_epoch().count() * 1000; }
+Time time_of(std::int64_t ns) { return Time{Duration{ns / 1000}}; }
 }  // namespace
 
-Bus::Bus(std::string name) : name_(std::move(name)) {}
+Bus::Bus(std::string name)
+    : name_(std::move(name)), load_(static_cast<std::size_t>(kLoadBuckets)), std_traffic_(CanFrame::kMaxStdId + 1) {}
+
+void Bus::set_timing(BusTiming timing, std::uint32_t bit_rate) {
+  timing_ = timing;
+  timing_rate_ = bit_rate == 0 ? 500000 : bit_rate;
+}
 
 int Bus::attach(FrameReceiver* receiver) {
-  endpoints_.push_back(Endpoint{receiver, true});
+  endpoints_.emplace_back();
+  endpoints_.back().receiver = receiver;
   return static_cast<int>(endpoints_.size()) - 1;
 }
 
 void Bus::set_online(int endpoint, bool online) {
-  if (endpoint >= 0 && endpoint < static_cast<int>(endpoints_.size())) endpoints_[endpoint].online = online;
+  if (endpoint < 0 || endpoint >= static_cast<int>(endpoints_.size())) return;
+  auto& ep = endpoints_[static_cast<std::size_t>(endpoint)];
+  ep.online = online;
+  if (!online) ep.tx.clear();  // the controller is off: what it had queued is gone
 }
 
 bool Bus::online(int endpoint) const {
   return endpoint >= 0 && endpoint < static_cast<int>(endpoints_.size()) && endpoints_[endpoint].online;
 }
 
+bool Bus::participates(int index) const {
+  const auto& ep = endpoints_[static_cast<std::size_t>(index)];
+  return ep.online && ep.counters.state != ErrorState::BusOff;
+}
+
+const ErrorCounters& Bus::counters(int endpoint) const {
+  if (endpoint < 0 || endpoint >= static_cast<int>(endpoints_.size())) return wire_counters_;
+  return endpoints_[static_cast<std::size_t>(endpoint)].counters;
+}
+
 void Bus::send(int from_endpoint, const CanFrame& frame, Time now) {
-  if (from_endpoint != kWire && !online(from_endpoint)) return;
+  if (from_endpoint != kWire && !participates(from_endpoint)) return;
   Pending p{frame, from_endpoint};
   if (filter_) {
     const auto verdict = filter_->on_send(p.frame, from_endpoint, now);
@@ -41,46 +72,352 @@ void Bus::send(int from_endpoint, const CanFrame& frame, Time now) {
       return;
     }
   }
-  queue_.push(p);
+  if (timing_ == BusTiming::Ideal) {
+    queue_.push(p);
+    return;
+  }
+  auto* ep = endpoint_of(from_endpoint);
+  if (ep->tx.size() >= tx_depth_) {
+    ++stats_.tx_queue_overflow;
+    ++ep->counters.tx_queue_overflow;
+    return;
+  }
+  ep->tx.push(Queued{p.frame, ns_of(now)});
+}
+
+void Bus::release_delayed(Time now) {
+  if (delayed_.empty()) return;
+  // Release due delayed frames in the order they were delayed (stable for determinism).
+  auto due_end = std::stable_partition(delayed_.begin(), delayed_.end(),
+                                       [now](const Delayed& d) { return d.due <= now; });
+  for (auto it = delayed_.begin(); it != due_end; ++it) {
+    if (timing_ == BusTiming::Ideal) {
+      queue_.push(it->pending);
+    } else if (it->pending.from == kWire || participates(it->pending.from)) {
+      auto* ep = endpoint_of(it->pending.from);
+      if (ep->tx.size() < tx_depth_) {
+        ep->tx.push(Queued{it->pending.frame, ns_of(it->due)});
+      } else {
+        ++stats_.tx_queue_overflow;
+        ++ep->counters.tx_queue_overflow;
+      }
+    }
+  }
+  delayed_.erase(delayed_.begin(), due_end);
 }
 
 std::size_t Bus::deliver(Time now) {
-  if (!delayed_.empty()) {
-    // Release due delayed frames in the order they were delayed (stable for determinism).
-    auto due_end = std::stable_partition(delayed_.begin(), delayed_.end(),
-                                         [now](const Delayed& d) { return d.due <= now; });
-    for (auto it = delayed_.begin(); it != due_end; ++it) queue_.push(it->pending);
-    delayed_.erase(delayed_.begin(), due_end);
-  }
+  now_ns_ = std::max(now_ns_, ns_of(now));
+  release_delayed(now);
   std::size_t n = 0;
-  while (!queue_.empty()) {
-    const Pending p = queue_.front();
-    queue_.pop();
-    deliver_one(p, now);
-    if (++n >= kMaxFramesPerDelivery) {
-      ++stats_.delivery_overflow;
-      log(LogLevel::Warn, "bus {}: more than {} frames in one tick; dropping {} queued frames", name_,
-          kMaxFramesPerDelivery, queue_.size());
-      queue_.clear();
-      break;
+  if (timing_ == BusTiming::Bit) {
+    deliver_timed(now, n);
+  } else {
+    while (!queue_.empty()) {
+      const Pending p = queue_.front();
+      queue_.pop();
+      deliver_one(p, now);
+      if (++n >= kMaxFramesPerDelivery) {
+        ++stats_.delivery_overflow;
+        log(LogLevel::Warn, "bus {}: more than {} frames in one tick; dropping {} queued frames", name_,
+            kMaxFramesPerDelivery, queue_.size());
+        queue_.clear();
+        break;
+      }
     }
   }
+  idle_until(ns_of(now), now);
   if (transport_) transport_->service(now);
   return n;
 }
 
+// ---- ideal timing -------------------------------------------------------------------------------
+
 void Bus::deliver_one(const Pending& p, Time now) {
+  const std::int64_t at_ns = std::max(ns_of(now), idle_ns_);
+  const FrameBits bits = frame_bits(p.frame);
+  // Attempts at zero duration: each destroyed one costs an error frame and counts.
+  if (filter_ && p.from != kWire) {
+    while (filter_->on_transmit(p.frame, p.from, now)) {
+      account(nullptr, bits.stuffed_region + bits.stuff_bits + 3 + kErrorFrameBits, at_ns);
+      ++stats_.error_frames;
+      transmit_error(p.from, now);
+      receive_result(p.from, true, now);
+      recessive_sequences(1, now);
+      if (!participates(p.from)) return;  // bus-off: the frame is gone with the queue
+    }
+  }
+  account(&p.frame, bits.total(), at_ns);
   ++stats_.frames;
   if (p.from == kWire) ++stats_.from_wire;
   const std::string_view wire_name = transport_ ? transport_->name() : std::string_view(name_);
   for (auto* tap : taps_) tap->on_bus_frame(wire_name, p.frame, now);
   if (transport_ && p.from != kWire) transport_->send(p.frame);
+  transmit_success(p.from, now);
+  receive_result(p.from, false, now);
+  recessive_sequences(1, now);
   for (std::size_t i = 0; i < endpoints_.size(); ++i) {
     const auto& ep = endpoints_[i];
-    if (static_cast<int>(i) == p.from || !ep.online || ep.receiver == nullptr) continue;
+    if (static_cast<int>(i) == p.from || !participates(static_cast<int>(i)) || ep.receiver == nullptr) continue;
     ep.receiver->on_frame(p.frame, now);
   }
 }
+
+// ---- bit timing ---------------------------------------------------------------------------------
+
+void Bus::deliver_timed(Time now, std::size_t& n) {
+  const std::int64_t now_ns = ns_of(now);
+  for (;;) {
+    if (in_flight_.active) {
+      if (in_flight_.deliver_ns > now_ns) break;
+      const bool delivered = !in_flight_.error;
+      complete(time_of(in_flight_.deliver_ns));
+      if (delivered) ++n;
+      continue;
+    }
+    if (!start_next(now_ns)) break;
+  }
+}
+
+bool Bus::start_next(std::int64_t now_ns) {
+  std::int64_t earliest = std::numeric_limits<std::int64_t>::max();
+  const int count = static_cast<int>(endpoints_.size());
+  auto ready_of = [](const Endpoint& ep) { return std::max(ep.tx.front().ready_ns, ep.suspend_until_ns); };
+  for (int i = -1; i < count; ++i) {
+    if (i >= 0 && !participates(i)) continue;
+    const Endpoint& ep = i < 0 ? wire_ : endpoints_[static_cast<std::size_t>(i)];
+    if (!ep.tx.empty()) earliest = std::min(earliest, ready_of(ep));
+  }
+  if (earliest == std::numeric_limits<std::int64_t>::max()) return false;
+  const std::int64_t start = std::max(idle_ns_, earliest);
+  // Everything sent at `start` must be known before it is decided: only instants before now.
+  if (start >= now_ns) return false;
+  int winner = kWire - 1;
+  std::uint64_t best = 0;
+  for (int i = 0; i <= count; ++i) {
+    const int index = i < count ? i : kWire;  // on equal keys the lower endpoint wins; the wire last
+    if (index >= 0 && !participates(index)) continue;
+    const Endpoint& ep = index < 0 ? wire_ : endpoints_[static_cast<std::size_t>(index)];
+    if (ep.tx.empty() || ready_of(ep) > start) continue;
+    const std::uint64_t key = arbitration_key(ep.tx.front().frame);
+    if (winner == kWire - 1 || key < best) {
+      winner = index;
+      best = key;
+    }
+  }
+  const Time start_time = time_of(start);
+  idle_until(start, start_time);
+  for (auto& ep : endpoints_) ep.recessive_ns = 0;  // the SOF ends every recessive sequence
+
+  const CanFrame& frame = endpoint_of(winner)->tx.front().frame;
+  const FrameBits bits = frame_bits(frame);
+  InFlight f;
+  f.active = true;
+  f.from = winner;
+  f.frame = frame;
+  f.start_ns = start;
+  f.error = filter_ && winner != kWire && filter_->on_transmit(frame, winner, start_time);
+  if (f.error) {
+    // Receivers find the CRC error at the CRC delimiter; the error flag starts after the ACK
+    // delimiter.
+    f.bits = bits.stuffed_region + bits.stuff_bits + 3 + kErrorFrameBits;
+    f.deliver_ns = start + static_cast<std::int64_t>(f.bits - 3) * bit_ns();
+  } else {
+    f.bits = bits.total();
+    f.deliver_ns = start + static_cast<std::int64_t>(bits.until_eof()) * bit_ns();
+  }
+  f.end_ns = start + static_cast<std::int64_t>(f.bits) * bit_ns();
+  in_flight_ = f;
+  // Counted when it starts: the load window then sees the bus busy while the frame is on it.
+  account(f.error ? nullptr : &f.frame, f.bits, f.start_ns);
+  return true;
+}
+
+void Bus::complete(Time at) {
+  const InFlight f = in_flight_;
+  in_flight_.active = false;
+  idle_ns_ = f.end_ns;
+  idle_accounted_ns_ = std::max(idle_accounted_ns_, f.end_ns);
+  Endpoint* sender = endpoint_of(f.from);
+  if (f.error) {
+    ++stats_.error_frames;
+    transmit_error(f.from, at);
+    receive_result(f.from, true, at);
+  } else {
+    // The frame leaves the queue only now: a destroyed one is retransmitted automatically.
+    if (!sender->tx.empty() && sender->tx.front().frame == f.frame) sender->tx.pop();
+    ++stats_.frames;
+    if (f.from == kWire) ++stats_.from_wire;
+    const std::string_view wire_name = transport_ ? transport_->name() : std::string_view(name_);
+    for (auto* tap : taps_) tap->on_bus_frame(wire_name, f.frame, at);
+    if (transport_ && f.from != kWire) transport_->send(f.frame);
+    transmit_success(f.from, at);
+    receive_result(f.from, false, at);
+  }
+  if (f.from != kWire && sender->counters.state == ErrorState::Passive)
+    sender->suspend_until_ns = f.end_ns + static_cast<std::int64_t>(kSuspendTransmissionBits) * bit_ns();
+  recessive_sequences(1, at);  // ACK delimiter + EOF + intermission, or error delimiter + intermission
+  if (f.error) return;
+  for (std::size_t i = 0; i < endpoints_.size(); ++i) {
+    const auto& ep = endpoints_[i];
+    if (static_cast<int>(i) == f.from || !participates(static_cast<int>(i)) || ep.receiver == nullptr) continue;
+    ep.receiver->on_frame(f.frame, at);
+  }
+}
+
+// ---- fault confinement --------------------------------------------------------------------------
+
+void Bus::transmit_error(int from, Time at) {
+  if (from == kWire) return;
+  endpoints_[static_cast<std::size_t>(from)].counters.tec += 8;
+  update_state(from, at);
+}
+
+void Bus::transmit_success(int from, Time at) {
+  if (from == kWire) return;
+  auto& c = endpoints_[static_cast<std::size_t>(from)].counters;
+  if (c.tec > 0) --c.tec;
+  update_state(from, at);
+}
+
+void Bus::receive_result(int from, bool error, Time at) {
+  for (int i = 0; i < static_cast<int>(endpoints_.size()); ++i) {
+    if (i == from || !participates(i)) continue;
+    auto& c = endpoints_[static_cast<std::size_t>(i)].counters;
+    if (error) {
+      ++c.rec;
+    } else if (c.rec >= kPassiveLimit) {
+      c.rec = kRecAfterPassiveSuccess;
+    } else if (c.rec > 0) {
+      --c.rec;
+    }
+    update_state(i, at);
+  }
+}
+
+void Bus::update_state(int index, Time at) {
+  auto& ep = endpoints_[static_cast<std::size_t>(index)];
+  auto& c = ep.counters;
+  if (c.state == ErrorState::BusOff) return;  // only the recovery sequence ends it
+  ErrorState next = ErrorState::Active;
+  if (c.tec > kBusOffLimit) next = ErrorState::BusOff;
+  else if (c.tec >= kPassiveLimit || c.rec >= kPassiveLimit) next = ErrorState::Passive;
+  if (next == c.state) return;
+  c.state = next;
+  if (next == ErrorState::BusOff) {
+    ++c.bus_off_events;
+    ep.tx.clear();
+    ep.recessive_ns = 0;
+    ep.recovery_sequences = 0;
+  }
+  notify(index, next, at);
+}
+
+void Bus::recessive_sequences(unsigned count, Time at) {
+  for (int i = 0; i < static_cast<int>(endpoints_.size()); ++i) add_recovery(i, count, at);
+}
+
+void Bus::add_recovery(int index, unsigned sequences, Time at) {
+  auto& ep = endpoints_[static_cast<std::size_t>(index)];
+  if (ep.counters.state != ErrorState::BusOff || sequences == 0) return;
+  ep.recovery_sequences += sequences;
+  if (ep.recovery_sequences < kRecoverySequences) return;
+  ep.counters.tec = 0;
+  ep.counters.rec = 0;
+  ep.counters.state = ErrorState::Active;
+  ep.recovery_sequences = 0;
+  ep.recessive_ns = 0;
+  notify(index, ErrorState::Active, at);
+}
+
+void Bus::idle_until(std::int64_t until_ns, Time at) {
+  if (in_flight_.active) return;
+  const std::int64_t from = std::max(idle_ns_, idle_accounted_ns_);
+  if (until_ns <= from) return;
+  idle_accounted_ns_ = until_ns;
+  const std::int64_t sequence_ns = static_cast<std::int64_t>(kFrameTailBits) * bit_ns();
+  for (int i = 0; i < static_cast<int>(endpoints_.size()); ++i) {
+    auto& ep = endpoints_[static_cast<std::size_t>(i)];
+    if (ep.counters.state != ErrorState::BusOff) continue;
+    ep.recessive_ns += until_ns - from;
+    const auto sequences = static_cast<unsigned>(ep.recessive_ns / sequence_ns);
+    ep.recessive_ns %= sequence_ns;
+    add_recovery(i, sequences, at);
+  }
+}
+
+void Bus::notify(int index, ErrorState state, Time at) {
+  auto* receiver = endpoints_[static_cast<std::size_t>(index)].receiver;
+  if (receiver) receiver->on_error_state(state, at);
+}
+
+// ---- load ---------------------------------------------------------------------------------------
+
+void Bus::account(const CanFrame* frame, unsigned bits, std::int64_t start_ns) {
+  stats_.busy_bits += bits;
+  const std::int64_t duration = static_cast<std::int64_t>(bits) * bit_ns();
+  busy_ns_ += static_cast<std::uint64_t>(duration);
+  if (timing_ == BusTiming::Ideal) idle_ns_ = std::max(idle_ns_, start_ns + duration);
+  // Split the occupancy over the millisecond buckets it covers.
+  std::int64_t t = start_ns;
+  const std::int64_t end = start_ns + duration;
+  while (t < end) {
+    const std::int64_t ms = t / 1000000;
+    const std::int64_t bucket_end = std::min(end, (ms + 1) * 1000000);
+    auto& b = load_[static_cast<std::size_t>(ms % kLoadBuckets)];
+    if (b.ms != ms) b = LoadBucket{ms, 0};
+    b.busy_ns += bucket_end - t;
+    t = bucket_end;
+  }
+  if (!frame) return;
+  IdTraffic* entry = nullptr;
+  if (!frame->extended) {
+    entry = &std_traffic_[frame->id & CanFrame::kMaxStdId];
+    if (entry->frames == 0) {
+      entry->id = frame->id & CanFrame::kMaxStdId;
+      std_order_.push_back(static_cast<std::uint16_t>(entry->id));
+    }
+  } else {
+    for (auto& e : ext_traffic_)
+      if (e.id == frame->id) entry = &e;
+    if (!entry) {  // allocates only for an identifier not seen before
+      ext_traffic_.push_back(IdTraffic{frame->id, true, 0, 0});
+      entry = &ext_traffic_.back();
+    }
+  }
+  ++entry->frames;
+  entry->bits += bits;
+}
+
+double Bus::load() const {
+  // The last kLoadWindowMs whole milliseconds before now (the one now is in has not happened).
+  const std::int64_t now_ms = now_ns_ / 1000000;
+  std::int64_t busy = 0;
+  for (const auto& b : load_)
+    if (b.ms >= now_ms - kLoadWindowMs && b.ms < now_ms) busy += b.busy_ns;
+  return std::min(1.0, static_cast<double>(busy) / (static_cast<double>(kLoadWindowMs) * 1e6));
+}
+
+double Bus::mean_load() const {
+  if (now_ns_ <= 0) return 0.0;
+  return std::min(1.0, static_cast<double>(busy_ns_) / static_cast<double>(now_ns_));
+}
+
+std::vector<IdTraffic> Bus::traffic() const {
+  std::vector<IdTraffic> out;
+  out.reserve(std_order_.size() + ext_traffic_.size());
+  for (auto id : std_order_) out.push_back(std_traffic_[id]);
+  out.insert(out.end(), ext_traffic_.begin(), ext_traffic_.end());
+  return out;
+}
+
+std::size_t Bus::pending_frames() const {
+  std::size_t n = wire_.tx.size() + queue_.size() + delayed_.size();
+  for (const auto& ep : endpoints_) n += ep.tx.size();
+  return n;
+}
+
+// ---- transport ----------------------------------------------------------------------------------
 
 std::size_t Bus::poll_transport(Time now) {
   if (!transport_) return 0;

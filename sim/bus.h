@@ -2,6 +2,18 @@
 // attach to it; every frame one endpoint sends reaches all others, optionally the wire (a
 // Transport such as SocketCAN) and the taps (trace writers). Without a transport the bus is the
 // in-process virtual bus.
+//
+// Timing (BusTiming): `Ideal` delivers a frame in the tick it is sent, at zero duration. `Bit`
+// gives the in-process bus the wire's time: every frame occupies the bus for its exact bit count
+// (can_bit_timing.h) at the bit rate; each endpoint has a FIFO transmit queue of bounded depth;
+// when the bus goes idle the queue heads arbitrate (lowest arbitration field wins); a frame is
+// delivered at the end of its EOF, stamped with that instant. The bus decides frame starts only
+// for instants strictly before the `now` of deliver(), so every frame sent at an instant competes.
+//
+// Fault confinement (ISO 11898-1) runs in both modes: a transmission the filter destroys
+// (FrameFilter::on_transmit) raises an error frame; TEC +8 for the sender, REC +1 for the
+// receivers, -1 for each success; error-passive at 128, bus-off above TEC 255 (queue flushed,
+// neither sending nor receiving), back to error-active after 128 sequences of 11 recessive bits.
 #pragma once
 
 #include <cstdint>
@@ -16,11 +28,18 @@
 
 namespace sim {
 
+/// ISO 11898-1 fault confinement state of one CAN controller.
+enum class ErrorState : std::uint8_t { Active, Passive, BusOff };
+
+enum class BusTiming : std::uint8_t { Ideal, Bit };
+
 /// Something that receives the frames on a bus.
 class FrameReceiver {
  public:
   virtual ~FrameReceiver() = default;
   virtual void on_frame(const CanFrame& frame, Time now) = 0;
+  /// The endpoint's own controller changed its fault confinement state (see Bus).
+  virtual void on_error_state(ErrorState /*state*/, Time /*now*/) {}
 };
 
 /// Observes every frame that crosses the bus exactly once (trace writers, counters, checks).
@@ -40,6 +59,9 @@ class FrameFilter {
   };
   virtual ~FrameFilter() = default;
   virtual Verdict on_send(CanFrame& frame, int from_endpoint, Time now) = 0;
+  /// Called for every transmission attempt (retransmissions too); true = a bit error destroys
+  /// this attempt (error frame, counters, automatic retransmission).
+  virtual bool on_transmit(const CanFrame& /*frame*/, int /*from_endpoint*/, Time /*start*/) { return false; }
 };
 
 struct BusStats {
@@ -47,6 +69,26 @@ struct BusStats {
   std::uint64_t from_wire = 0;       ///< of which received from the transport
   std::uint64_t dropped_by_filter = 0;
   std::uint64_t delivery_overflow = 0;  ///< ping-pong guard tripped (see deliver())
+  std::uint64_t tx_queue_overflow = 0;  ///< Bit timing: frames refused by a full transmit queue
+  std::uint64_t error_frames = 0;       ///< transmissions destroyed by a bit error
+  std::uint64_t busy_bits = 0;          ///< bits the frames and error frames occupied the bus
+};
+
+/// Traffic of one identifier (frames delivered and the bits they occupied).
+struct IdTraffic {
+  std::uint32_t id = 0;
+  bool extended = false;
+  std::uint64_t frames = 0;
+  std::uint64_t bits = 0;
+};
+
+/// The fault confinement counters of one endpoint.
+struct ErrorCounters {
+  unsigned tec = 0;
+  unsigned rec = 0;
+  ErrorState state = ErrorState::Active;
+  std::uint64_t tx_queue_overflow = 0;
+  std::uint64_t bus_off_events = 0;
 };
 
 class Bus {
@@ -62,6 +104,19 @@ class Bus {
   /// configured for another rate can neither send nor receive (see canopen::Node).
   void set_bit_rate_kbit(unsigned kbit) { bit_rate_kbit_ = kbit; }
   unsigned bit_rate_kbit() const { return bit_rate_kbit_; }
+
+  /// Bit timing at `bit_rate` bit/s, or the ideal zero-time bus (the default).
+  void set_timing(BusTiming timing, std::uint32_t bit_rate = 500000);
+  BusTiming timing() const { return timing_; }
+  /// The rate frames are timed (and bus load computed) at, bit/s.
+  std::uint32_t timing_bit_rate() const { return timing_rate_; }
+  /// Depth of each endpoint's transmit queue (Bit timing); a frame sent to a full queue is
+  /// dropped and counted. Default kDefaultTxQueue.
+  void set_tx_queue_depth(std::size_t depth) { tx_depth_ = depth == 0 ? 1 : depth; }
+  std::size_t tx_queue_depth() const { return tx_depth_; }
+  static constexpr std::size_t kDefaultTxQueue = 32;
+  /// The sliding window of load().
+  static constexpr int kLoadWindowMs = 100;
 
   /// Attaches a receiver; returns its endpoint id (used as `from` when it sends).
   int attach(FrameReceiver* receiver);
@@ -85,11 +140,36 @@ class Bus {
   void set_filter(FrameFilter* filter) { filter_ = filter; }
 
   const BusStats& stats() const { return stats_; }
+  /// Fraction of the last kLoadWindowMs whole milliseconds before the last deliver() that frames
+  /// and error frames occupied the bus (a frame counts from its start, intermission included).
+  double load() const;
+  /// Busy time / elapsed time since the start of the run, at the last deliver().
+  double mean_load() const;
+  /// Per identifier, in first-seen order (standard identifiers, then extended ones).
+  std::vector<IdTraffic> traffic() const;
+  const ErrorCounters& counters(int endpoint) const;
+  std::size_t endpoint_count() const { return endpoints_.size(); }
+  /// The frame on the wire or waiting in a queue (Bit timing): frames not yet delivered.
+  std::size_t pending_frames() const;
 
  private:
   struct Pending {
     CanFrame frame;
     int from = kWire;
+  };
+  struct Queued {
+    CanFrame frame;
+    std::int64_t ready_ns = 0;  ///< sent at
+  };
+  struct InFlight {
+    bool active = false;
+    int from = kWire;
+    CanFrame frame;
+    bool error = false;
+    std::int64_t start_ns = 0;
+    std::int64_t deliver_ns = 0;  ///< end of EOF (or of the error frame)
+    std::int64_t end_ns = 0;      ///< bus free again (after intermission)
+    unsigned bits = 0;
   };
   struct Delayed {
     Pending pending;
@@ -98,9 +178,31 @@ class Bus {
   struct Endpoint {
     FrameReceiver* receiver = nullptr;
     bool online = true;
+    RingBuffer<Queued> tx{8};
+    std::int64_t suspend_until_ns = 0;  ///< error-passive: suspend transmission after sending
+    std::int64_t recessive_ns = 0;      ///< bus-off: idle time not yet counted as 11-bit sequences
+    unsigned recovery_sequences = 0;    ///< bus-off: sequences of 11 recessive bits seen
+    ErrorCounters counters;
   };
 
   void deliver_one(const Pending& p, Time now);
+  void deliver_timed(Time now, std::size_t& n);
+  bool start_next(std::int64_t now_ns);
+  void complete(Time now);
+  void release_delayed(Time now);
+  Endpoint* endpoint_of(int from) { return from == kWire ? &wire_ : &endpoints_[static_cast<std::size_t>(from)]; }
+  bool participates(int index) const;
+  // Fault confinement.
+  void transmit_error(int from, Time at);
+  void transmit_success(int from, Time at);
+  void receive_result(int from, bool error, Time at);
+  void update_state(int index, Time at);
+  void recessive_sequences(unsigned count, Time at);
+  void add_recovery(int index, unsigned sequences, Time at);
+  void idle_until(std::int64_t until_ns, Time at);
+  void account(const CanFrame* frame, unsigned bits, std::int64_t start_ns);
+  void notify(int index, ErrorState state, Time at);
+  std::int64_t bit_ns() const { return 1000000000LL / timing_rate_; }
 
   std::string name_;
   std::vector<Endpoint> endpoints_;
@@ -111,6 +213,28 @@ class Bus {
   FrameFilter* filter_ = nullptr;
   BusStats stats_;
   unsigned bit_rate_kbit_ = 0;
+
+  BusTiming timing_ = BusTiming::Ideal;
+  std::uint32_t timing_rate_ = 500000;
+  std::size_t tx_depth_ = kDefaultTxQueue;
+  Endpoint wire_;                      // the transport's frames (Bit timing)
+  InFlight in_flight_;
+  std::int64_t idle_ns_ = 0;           // the bus is free from here
+  std::int64_t idle_accounted_ns_ = 0; // idle time counted for bus-off recovery up to here
+  std::int64_t now_ns_ = 0;            // the last deliver()
+  std::uint64_t busy_ns_ = 0;
+  // Load window: busy nanoseconds per millisecond. A frame is counted when it starts, so buckets
+  // ahead of now are written too (the longest frame at 10 kbit/s lasts 16 ms).
+  static constexpr int kLoadBuckets = kLoadWindowMs + 32;
+  struct LoadBucket {
+    std::int64_t ms = -1;
+    std::int64_t busy_ns = 0;
+  };
+  std::vector<LoadBucket> load_;
+  std::vector<IdTraffic> std_traffic_;  // 2048, indexed by identifier
+  std::vector<IdTraffic> ext_traffic_;  // first seen order
+  std::vector<std::uint16_t> std_order_;
+  ErrorCounters wire_counters_;
 };
 
 }  // namespace sim

@@ -36,6 +36,10 @@ class Application {
   virtual bool on_communication_error(CommError) { return false; }
   /// The communication error condition ended (guarding resumed, heartbeat back).
   virtual void on_communication_recovered(CommError) {}
+  /// The CAN controller became error passive (true) or error active again (false). Return true
+  /// if the device handled it; otherwise the stack raises / clears ErrorControlPolicy's
+  /// error_passive_emcy.
+  virtual bool on_error_passive(bool /*passive*/) { return false; }
   /// Device logic once per tick, after the tick's frames and before TPDO evaluation.
   virtual void process(sim::Time /*now*/, sim::Duration /*dt*/) {}
 };

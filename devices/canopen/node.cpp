@@ -251,6 +251,27 @@ void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
   }
 }
 
+void Node::on_error_state(sim::ErrorState state, sim::Time now) {
+  const sim::ErrorState previous = controller_state_;
+  controller_state_ = state;
+  if (!powered_) return;
+  if (now > now_) now_ = now;
+  if (state == sim::ErrorState::BusOff) {
+    bus_off_ = true;
+    return;
+  }
+  const auto& p = policy_.error_control;
+  if (state == sim::ErrorState::Passive && previous == sim::ErrorState::Active) {
+    if (!app().on_error_passive(true) && p.error_passive_emcy != 0) emcy_->raise(p.error_passive_emcy, p.communication_error_register);
+  } else if (state == sim::ErrorState::Active && previous != sim::ErrorState::Active) {
+    if (!app().on_error_passive(false) && p.error_passive_emcy != 0) emcy_->clear(p.error_passive_emcy);
+  }
+  if (previous == sim::ErrorState::BusOff) {
+    bus_off_ = false;
+    communication_error(CommError::BusOffRecovered);
+  }
+}
+
 void Node::step(sim::Time now, sim::Duration dt) {
   if (!powered_) return;
   now_ = now;

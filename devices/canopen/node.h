@@ -52,6 +52,9 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   bool powered() const { return powered_; }
 
   void on_frame(const sim::CanFrame& frame, sim::Time now) override;
+  /// The bus's fault confinement (sim::Bus): error passive raises EMCY 8120h (or the product's
+  /// reaction), bus-off silences the node, the recovery ends in communication_error(BusOffRecovered).
+  void on_error_state(sim::ErrorState state, sim::Time now) override;
   void step(sim::Time now, sim::Duration dt) override;
 
   // --- state ----------------------------------------------------------------------------------
@@ -141,6 +144,7 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   sim::Time now_{};
   sim::Time silent_until_{};
   bool bus_off_ = false;
+  sim::ErrorState controller_state_ = sim::ErrorState::Active;
   bool detecting_bit_rate_ = false;
   unsigned detected_kbit_ = 0;
 

@@ -57,6 +57,9 @@ struct ErrorControlPolicy {
   std::uint16_t heartbeat_consumer_emcy = 0x8130;
   /// EMCY when the CAN controller is back from bus-off (CiA 301: 0x8140, an event); 0 = none.
   std::uint16_t bus_off_recovered_emcy = 0x8140;
+  /// EMCY while the CAN controller is error passive (CiA 301: 0x8120); 0 = none. Raised when
+  /// the bus's fault confinement reports error passive, cleared when it is error active again.
+  std::uint16_t error_passive_emcy = 0x8120;
   std::uint8_t communication_error_register = 0x11;
   /// CiA 301 §7.5.2.21 (0x1016): configuring a second non-zero consumer heartbeat time for a
   /// node-ID that another sub-index already watches is refused with this code (None = allowed).

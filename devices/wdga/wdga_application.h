@@ -42,6 +42,11 @@ class Application final : public canopen::Application {
   void after_reset_communication() override;
   void on_nmt_state_changed(canopen::NmtState from, canopen::NmtState to) override;
   bool on_communication_error(canopen::CommError error) override;
+  /// The bus's fault confinement: the same EMCY 8120h as the can_error_passive fault.
+  bool on_error_passive(bool passive) override {
+    set_error_passive(passive);
+    return true;
+  }
   void process(sim::Time now, sim::Duration dt) override;
 
  private:

@@ -67,8 +67,10 @@ TEST(Outputs, TraceCsvPlotAndJunit) {
   EXPECT_EQ(rows, 10);  // samples at 0.0 .. 0.9 s
 
   const auto trace = read_file(dir + "/run.log");
-  EXPECT_EQ(trace.substr(0, 32), "(0000000000.000000) main 705#00\n");
-  EXPECT_NE(trace.find("(0000000000.010000) main 000#0100\n"), std::string::npos);
+  // Bit timing at 500 kbit/s: stamps are the ends of the frames' EOF, 2 us per bit after the tick
+  // that sent them (boot-up 55 bits, NMT start 65 bits, stuff bits included).
+  EXPECT_EQ(trace.substr(0, 32), "(0000000000.000110) main 705#00\n");
+  EXPECT_NE(trace.find("(0000000000.010130) main 000#0100\n"), std::string::npos);
 
   std::FILE* f = std::fopen((dir + "/plot.png").c_str(), "rb");
   ASSERT_NE(f, nullptr);

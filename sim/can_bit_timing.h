@@ -1,0 +1,39 @@
+// The length of a classic CAN frame on the wire, in bits (ISO 11898-1): SOF, arbitration field,
+// control field, data, CRC-15 computed over the frame's actual bits, the stuff bits those bits
+// need (SOF..CRC sequence, after five equal bits one of the other level), CRC delimiter, ACK slot
+// and delimiter, EOF and the 3-bit intermission. Pure functions; the bus times frames with them.
+#pragma once
+
+#include <cstdint>
+
+#include "sim/can_frame.h"
+
+namespace sim {
+
+/// ACK delimiter + EOF + intermission: the 11 recessive bits that end every frame.
+inline constexpr unsigned kFrameTailBits = 1 + 7 + 3;
+/// An error frame as this model puts it on the wire: a 6-bit error flag, up to 6 bits of other
+/// nodes' flags superposed on it (counted in full), the 8-bit error delimiter and intermission.
+inline constexpr unsigned kErrorFrameBits = 6 + 6 + 8 + 3;
+
+struct FrameBits {
+  unsigned stuffed_region = 0;  ///< SOF..CRC sequence before stuffing
+  unsigned stuff_bits = 0;
+  std::uint16_t crc = 0;        ///< the CRC-15 sequence
+  /// Everything, intermission included: the time the frame keeps the bus from the next SOF.
+  unsigned total() const { return stuffed_region + stuff_bits + 1 /*CRC delim*/ + 2 /*ACK*/ + 7 /*EOF*/ + 3; }
+  /// Up to the end of EOF (the instant receivers accept the frame).
+  unsigned until_eof() const { return total() - 3; }
+};
+
+/// CRC-15/CAN (polynomial 0x4599) over `count` bits given MSB-first in `bits`.
+std::uint16_t can_crc15(const std::uint8_t* bits, unsigned count);
+
+/// The frame's exact bit count and where they come from.
+FrameBits frame_bits(const CanFrame& frame);
+
+/// The arbitration order key: the arbitration field's bits (ID, RTR/SRR, IDE, extended ID,
+/// RTR) as one number; the lower key wins arbitration, since dominant is 0.
+std::uint64_t arbitration_key(const CanFrame& frame);
+
+}  // namespace sim
