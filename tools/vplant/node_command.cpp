@@ -1,11 +1,12 @@
 // `vplant node`: one emulated node on a SocketCAN interface or the virtual bus, in real time
 // (a master under test talks to it) or in virtual time for a fixed duration.
-#include <csignal>
+#include <atomic>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "devices/canopen/parameter_store.h"
 #include "devices/generic/eds_node.h"
 #include "devices/registry.h"
 #include "sim/bus.h"
@@ -16,15 +17,19 @@
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exit_codes.h"
 #include "tools/vplant/key_value.h"
+#include "tools/vplant/stop_signals.h"
 
 namespace vplant {
 
 namespace {
 
-sim::Scheduler* g_running = nullptr;
+std::atomic<sim::Scheduler*> g_running{nullptr};
 
-extern "C" void stop_on_signal(int) {
-  if (g_running) g_running->request_stop();
+bool stop_running_node() {
+  sim::Scheduler* s = g_running.load();
+  if (!s) return false;
+  s->request_stop();
+  return true;
 }
 
 struct NodeOptions {
@@ -39,9 +44,11 @@ struct NodeOptions {
   double duration_s = 0;
   std::string trace;
   bool virtual_time = false;
+  bool strict = false;
 };
 
 int run_node(const NodeOptions& o) {
+  install_stop_signals(stop_running_node);
   if (o.eds.empty() == o.device.empty()) {
     std::fprintf(stderr, "vplant node: give exactly one of --eds FILE or --device NAME\n");
     return kExitBadInput;
@@ -54,7 +61,16 @@ int run_node(const NodeOptions& o) {
   options.node_id = static_cast<std::uint8_t>(o.node_id);
   options.variant = o.variant;
   options.store_path = o.store;
+  options.strict_eds = o.strict;
   std::string error;
+  if (!o.store.empty()) {
+    // Read again at power-on; reading it now turns a bad file into exit 2 before anything runs.
+    canopen::ParameterStore probe(o.store);
+    if (!probe.load(error)) {
+      std::fprintf(stderr, "vplant node: --store %s\n", error.c_str());
+      return kExitBadInput;
+    }
+  }
   if (!parse_key_values(o.settings, options.settings, error)) {
     std::fprintf(stderr, "vplant node: --setting %s\n", error.c_str());
     return kExitBadInput;
@@ -108,9 +124,7 @@ int run_node(const NodeOptions& o) {
   scheduler.add_bus(&bus);
   device->node().attach(bus);
   scheduler.add(&device->node());
-  g_running = &scheduler;
-  std::signal(SIGINT, stop_on_signal);
-  std::signal(SIGTERM, stop_on_signal);
+  g_running.store(&scheduler);
 
   std::fprintf(stderr, "vplant node: %s node-ID %u on %s%s\n", o.eds.empty() ? o.device.c_str() : o.eds.c_str(),
                device->node().node_id(), o.can.empty() ? "the virtual bus" : o.can.c_str(),
@@ -121,7 +135,7 @@ int run_node(const NodeOptions& o) {
   } else {
     scheduler.run_until_stopped();
   }
-  g_running = nullptr;
+  g_running.store(nullptr);
   if (trace) trace->flush();
 
   const auto& st = scheduler.stats();
@@ -155,6 +169,7 @@ Runner add_node_command(CLI::App& app) {
   app.add_option("--duration", o->duration_s, "seconds to run (default: until SIGINT/SIGTERM)")->check(CLI::NonNegativeNumber);
   app.add_option("--trace", o->trace, "write all frames in candump -L format ('-' = stdout)");
   app.add_flag("--virtual", o->virtual_time, "virtual time (as fast as possible; needs --duration)");
+  app.add_flag("--strict", o->strict, "--eds: reject the CiA 306 deviations that are otherwise loaded with a warning");
   return [o] { return run_node(*o); };
 }
 
