@@ -32,8 +32,7 @@ inline std::string unique_temp_path(std::string_view stem, std::string_view suff
 
 /// A unique_temp_path() that is removed when it goes out of scope, also when a failed assertion
 /// returns early: the file, a directory with its contents, and the ".tmp" sibling an atomic save
-/// leaves behind when it is killed. ctest checks that the tests' temporary directory ends up empty
-/// (tests/CMakeLists.txt, test_tmpdir_is_empty).
+/// leaves behind when it is killed.
 class TempPath {
  public:
   explicit TempPath(std::string_view stem, std::string_view suffix = {}) : path_(unique_temp_path(stem, suffix)) {}
