@@ -24,6 +24,7 @@ struct DeviceOptions {
   std::string variant;       ///< "" = the product's default variant
   std::map<std::string, std::string> settings;
   std::string store_path;    ///< non-volatile memory file ("" = in memory for the run)
+  bool strict_eds = false;   ///< an EDS node: reject the file's CiA 306 deviations (canopen::EdsStrictness)
 };
 
 struct FaultInfo {

@@ -14,6 +14,7 @@
 #include "engine/recorder.h"
 #include "engine/scenario_loader.h"
 #include "engine/scripted_master.h"
+#include "engine/speed_text.h"
 #include "engine/world.h"
 
 namespace scenario {
@@ -64,6 +65,7 @@ Runner::Runner(const Scenario& scenario, const Environment& env, const RunOption
   auto& m = *impl_;
   BuildOptions build;
   build.can = options.can;
+  build.strict_eds = options.strict_eds;
   m.world = std::make_unique<World>(scenario, env, build, options.seed.value_or(scenario.clock.seed));
   const auto logger = [&m](sim::Time t, const std::string& text) { m.log(t, text); };
   m.faults = std::make_unique<FaultInjector>(*m.world, m.verdicts, logger);
@@ -164,10 +166,10 @@ int Runner::run() {
         progress_shown = true;
         const double sim_s = sim::seconds(sched.now());
         if (m.duration) {
-          std::fprintf(m.options.out, "\r  %.1f / %.1f s simulated (%.0f× real time)   ", sim_s, sim::seconds(*m.duration),
-                       sim_s / (w - wall_start));
+          std::fprintf(m.options.out, "\r  %.1f / %.1f s simulated (%s)   ", sim_s, sim::seconds(*m.duration),
+                       real_time_factor_text(sim_s, w - wall_start).c_str());
         } else {
-          std::fprintf(m.options.out, "\r  %.1f s simulated (%.0f× real time)   ", sim_s, sim_s / (w - wall_start));
+          std::fprintf(m.options.out, "\r  %.1f s simulated (%s)   ", sim_s, real_time_factor_text(sim_s, w - wall_start).c_str());
         }
         std::fflush(m.options.out);
       }
@@ -240,9 +242,8 @@ int Runner::run() {
                  sim::seconds(o.time), o.name.c_str(), o.expected.c_str(), o.actual.c_str());
   }
   if (!m.options.quiet) {
-    std::fprintf(out, "vplant run: %s: %.3f s simulated in %.3f s wall (%.0f× real time)%s\n", m.scenario.name.c_str(),
-                 s.simulated_s, s.wall_s, s.wall_s > 0 ? s.simulated_s / s.wall_s : 0.0,
-                 s.interrupted ? ", interrupted" : "");
+    std::fprintf(out, "vplant run: %s: %.3f s simulated in %.3f s wall (%s)%s\n", m.scenario.name.c_str(), s.simulated_s,
+                 s.wall_s, real_time_factor_text(s.simulated_s, s.wall_s).c_str(), s.interrupted ? ", interrupted" : "");
     for (const auto& b : s.buses) {
       std::fprintf(out, "  bus %s (%s): %llu frames\n", b.name.c_str(), b.wire.c_str(), static_cast<unsigned long long>(b.frames));
       std::fputs(b.load.c_str(), out);

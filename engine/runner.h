@@ -36,6 +36,7 @@ struct RunOptions {
   std::string trace, csv, junit;           ///< override the scenario's outputs
   bool progress = false;                   ///< progress line on stderr (a terminal)
   bool quiet = false;                      ///< no summary (tests, benchmarks)
+  bool strict_eds = false;                 ///< --strict: EDS nodes reject CiA 306 deviations
   std::FILE* out = stderr;                 ///< summary, failures, log lines
   /// Watches and steers the run between ticks (the live control plane); may keep a run going
   /// past its duration. Not owned.

@@ -56,7 +56,7 @@ struct NodeSpec {
   std::vector<std::pair<std::string, double>> inputs;  ///< constant input ports (Device::set_input)
   std::vector<SourceMark> input_marks;
   std::string store;   ///< non-volatile memory file (relative to the scenario file); "" = in memory
-  SourceMark mark, device_mark, node_id_mark, settings_mark;
+  SourceMark mark, device_mark, node_id_mark, settings_mark, store_mark;
 };
 
 struct WireSpec {

@@ -1,10 +1,11 @@
 #include "engine/scenario_loader.h"
 
-#include <fstream>
 #include <set>
-#include <sstream>
+
+#include <yaml-cpp/depthguard.h>
 
 #include "engine/script_loader.h"
+#include "sim/file_reader.h"
 #include "sim/transport_factory.h"
 
 namespace scenario {
@@ -123,7 +124,10 @@ std::vector<NodeSpec> read_nodes(const YAML::Node& seq, const std::string& file,
       }
       ir.finish();
     }
-    if (auto st = r.get("store")) n.store = resolve_input(dir, read_string(st, file, "store"));
+    if (auto st = r.get("store")) {
+      n.store = resolve_input(dir, read_string(st, file, "store"));
+      n.store_mark = mark_of(st, file);
+    }
     r.finish();
     nodes.push_back(std::move(n));
   }
@@ -265,6 +269,9 @@ Scenario parse_scenario(const std::string& text, const std::string& file, const 
   YAML::Node root;
   try {
     root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw LoadError(SourceMark{file, e.mark.line + 1, e.mark.column + 1},
+                    "nesting deeper than " + std::to_string(e.depth() - 1) + " levels (the YAML parser's limit)");
   } catch (const YAML::ParserException& e) {
     throw LoadError(SourceMark{file, e.mark.line + 1, e.mark.column + 1}, "YAML syntax error: " + e.msg);
   }
@@ -309,13 +316,15 @@ Scenario parse_scenario(const std::string& text, const std::string& file, const 
 }
 
 Scenario load_scenario_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw LoadError(SourceMark{path, 0, 0}, "cannot open the scenario file");
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string text, reason;
+  switch (sim::read_input_file(path, text, reason)) {
+    case sim::ReadStatus::Ok: break;
+    case sim::ReadStatus::Missing: throw LoadError(SourceMark{path, 0, 0}, "cannot open the scenario file");
+    case sim::ReadStatus::Failed: throw LoadError(SourceMark{path, 0, 0}, reason);
+  }
   const auto slash = path.rfind('/');
   const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
-  return parse_scenario(text.str(), path, dir);
+  return parse_scenario(text, path, dir);
 }
 
 }  // namespace scenario

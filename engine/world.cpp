@@ -1,6 +1,7 @@
 #include "engine/world.h"
 
 #include "devices/canopen/object_dictionary.h"
+#include "devices/canopen/parameter_store.h"
 #include "devices/generic/eds_node.h"
 #include "sim/transport_factory.h"
 #include "engine/value_codec.h"
@@ -26,7 +27,7 @@ std::string port_names(const sim::PortList& ports, const std::string& prefix) {
 World::World(const Scenario& scenario, const Environment& env, const BuildOptions& options, std::uint64_t seed)
     : scenario_(scenario), random_(seed) {
   build_buses(options);
-  build_nodes(env);
+  build_nodes(env, options.strict_eds);
   build_plant(env);
   build_wires();
 }
@@ -66,7 +67,7 @@ void World::build_buses(const BuildOptions& options) {
   }
 }
 
-void World::build_nodes(const Environment& env) {
+void World::build_nodes(const Environment& env, bool strict_eds) {
   nodes_.reserve(scenario_.nodes.size());
   for (const auto& spec : scenario_.nodes) {
     devices::DeviceOptions options;
@@ -74,7 +75,13 @@ void World::build_nodes(const Environment& env) {
     options.variant = spec.variant;
     options.settings = spec.settings;
     options.store_path = spec.store;
+    options.strict_eds = strict_eds;
     std::string error;
+    if (!spec.store.empty()) {
+      // The file is read again at power-on; reading it now turns a bad one into a load error.
+      canopen::ParameterStore probe(spec.store);
+      if (!probe.load(error)) throw LoadError(spec.store_mark, "node '" + spec.name + "': store: " + error);
+    }
     NodeInstance inst;
     inst.spec = &spec;
     if (spec.device == "eds") {

@@ -21,6 +21,7 @@ namespace scenario {
 
 struct BuildOptions {
   std::map<std::string, std::string> can;  ///< bus name → SocketCAN interface (overrides the file)
+  bool strict_eds = false;                 ///< EDS nodes reject CiA 306 deviations (--strict)
 };
 
 struct NodeInstance {
@@ -64,7 +65,7 @@ class World {
     bool on_plant = false;
   };
   void build_buses(const BuildOptions& options);
-  void build_nodes(const Environment& env);
+  void build_nodes(const Environment& env, bool strict_eds);
   void build_plant(const Environment& env);
   void build_wires();
   PortRef find_port(const std::string& qualified, const SourceMark& mark) const;

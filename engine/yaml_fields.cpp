@@ -170,7 +170,7 @@ std::optional<double> parse_number(std::string_view text) {
   return v;
 }
 
-std::optional<sim::Duration> parse_duration(std::string_view text) {
+std::optional<sim::Duration> parse_duration(std::string_view text, std::string* problem) {
   std::string s = trim(text);
   struct Unit {
     const char* suffix;
@@ -186,8 +186,25 @@ std::optional<sim::Duration> parse_duration(std::string_view text) {
       break;
     }
   }
-  const auto v = parse_number(s);
-  if (!v || *v < 0 || *v * scale > 1e9) return std::nullopt;
+  auto v = parse_number(s);
+  if (!v && !s.empty()) {
+    // A number too large for a double (1e400, inf) is a number all the same: out of range.
+    char* end = nullptr;
+    const double huge = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() + s.size() && !std::isnan(huge) && std::fabs(huge) >= 1) v = huge;
+  }
+  const char* why = nullptr;
+  if (!v) {
+    why = "is not a duration (e.g. 10ms, 1.5s, 250us)";
+  } else if (*v < 0) {
+    why = "is negative (a duration is 0 or more)";
+  } else if (*v * scale > kMaxDurationSeconds) {
+    why = "is out of range (at most 1e9 s, about 31 years)";
+  }
+  if (why) {
+    if (problem) *problem = why;
+    return std::nullopt;
+  }
   return sim::from_seconds(*v * scale);
 }
 
@@ -242,8 +259,9 @@ bool read_bool(const YAML::Node& n, const std::string& file, std::string_view wh
 
 sim::Duration read_duration(const YAML::Node& n, const std::string& file, std::string_view what) {
   const auto s = scalar_or_fail(n, file, what);
-  const auto d = parse_duration(s);
-  if (!d) fail(n, file, std::string(what) + ": '" + s + "' is not a duration (e.g. 10ms, 1.5s, 250us)");
+  std::string problem;
+  const auto d = parse_duration(s, &problem);
+  if (!d) fail(n, file, std::string(what) + ": '" + s + "' " + problem);
   return *d;
 }
 

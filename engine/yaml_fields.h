@@ -72,7 +72,11 @@ std::vector<std::string> read_string_list(const YAML::Node& n, const std::string
 /// Decimal, `0x` hex or `0b` binary integer with optional sign.
 std::optional<std::int64_t> parse_integer(std::string_view text);
 std::optional<double> parse_number(std::string_view text);
-std::optional<sim::Duration> parse_duration(std::string_view text);
+/// The longest duration a scenario may give (sim::Duration counts microseconds in 64 bits).
+inline constexpr double kMaxDurationSeconds = 1e9;
+/// "10", "2.5s", "500ms", "250us", "1min". When malformed, `problem` (if given) says why, to
+/// follow the quoted text: "is not a duration (...)", "is negative (...)", "is out of range (...)".
+std::optional<sim::Duration> parse_duration(std::string_view text, std::string* problem = nullptr);
 
 /// A scalar as the scenario author wrote it: integer, real or text (quoted scalars are text).
 struct Literal {

@@ -6,6 +6,10 @@
 #include <initializer_list>
 #include <string_view>
 
+#include <yaml-cpp/depthguard.h>
+
+#include "sim/file_reader.h"
+
 namespace plant {
 namespace {
 
@@ -139,11 +143,18 @@ PlantDescription parse_plant_description(const YAML::Node& plant, const std::str
 }
 
 PlantDescription load_plant_file(const std::string& path) {
+  std::string text, reason;
+  switch (sim::read_input_file(path, text, reason)) {
+    case sim::ReadStatus::Ok: break;
+    case sim::ReadStatus::Missing: throw DescriptionError(Diagnostic{SourceMark{path, 0, 0}, "cannot open: no such file"});
+    case sim::ReadStatus::Failed: throw DescriptionError(Diagnostic{SourceMark{path, 0, 0}, reason});
+  }
   YAML::Node root;
   try {
-    root = YAML::LoadFile(path);
-  } catch (const YAML::BadFile&) {
-    throw DescriptionError(Diagnostic{SourceMark{path, 0, 0}, "cannot read the file"});
+    root = YAML::Load(text);
+  } catch (const YAML::DeepRecursion& e) {
+    throw DescriptionError(Diagnostic{mark_of(e.mark, path),
+                                      "nesting deeper than " + std::to_string(e.depth() - 1) + " levels (the YAML parser's limit)"});
   } catch (const YAML::ParserException& e) {
     throw DescriptionError(Diagnostic{mark_of(e.mark, path), e.msg});
   }

@@ -4,26 +4,24 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 #include "devices/canopen/eds_ini.h"
 #include "devices/canopen/eds_reader.h"
+#include "sim/file_reader.h"
 
 namespace canopen {
 
 namespace {
 
 bool read_file(const std::string& path, std::string& text, EdsError& error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = EdsError{path, 0, std::string("cannot open: ") + std::strerror(errno), false};
-    return false;
+  std::string reason;
+  switch (sim::read_input_file(path, text, reason)) {
+    case sim::ReadStatus::Ok: return true;
+    case sim::ReadStatus::Missing: reason = std::string("cannot open: ") + std::strerror(ENOENT); break;
+    case sim::ReadStatus::Failed: break;
   }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  text = ss.str();
-  return true;
+  error = EdsError{path, 0, reason, false};
+  return false;
 }
 
 }  // namespace
@@ -33,8 +31,8 @@ std::string EdsError::message() const {
 }
 
 std::optional<ObjectDictionary> parse_eds(std::string_view text, const std::string& file_name, EdsError& error,
-                                          EdsFileInfo* info, std::vector<EdsError>* warnings) {
-  eds_detail::Diagnostics diag(file_name);
+                                          EdsFileInfo* info, std::vector<EdsError>* warnings, EdsStrictness strictness) {
+  eds_detail::Diagnostics diag(file_name, strictness == EdsStrictness::Strict);
   EdsFileInfo scratch;
   auto od = eds_detail::read_eds(text, diag, info ? *info : scratch);
   if (warnings) {
@@ -50,24 +48,24 @@ std::optional<ObjectDictionary> parse_eds(std::string_view text, const std::stri
 }
 
 std::optional<ObjectDictionary> load_eds(const std::string& path, EdsError& error, EdsFileInfo* info,
-                                         std::vector<EdsError>* warnings) {
+                                         std::vector<EdsError>* warnings, EdsStrictness strictness) {
   std::string text;
   if (!read_file(path, text, error)) return std::nullopt;
-  return parse_eds(text, path, error, info, warnings);
+  return parse_eds(text, path, error, info, warnings, strictness);
 }
 
-std::vector<EdsError> check_eds(std::string_view text, const std::string& file_name) {
-  eds_detail::Diagnostics diag(file_name);
+std::vector<EdsError> check_eds(std::string_view text, const std::string& file_name, EdsStrictness strictness) {
+  eds_detail::Diagnostics diag(file_name, strictness == EdsStrictness::Strict);
   EdsFileInfo info;
   (void)eds_detail::read_eds(text, diag, info);
   return diag.sorted();
 }
 
-std::vector<EdsError> check_eds_file(const std::string& path) {
+std::vector<EdsError> check_eds_file(const std::string& path, EdsStrictness strictness) {
   std::string text;
   EdsError error;
   if (!read_file(path, text, error)) return {error};
-  return check_eds(text, path);
+  return check_eds(text, path, strictness);
 }
 
 }  // namespace canopen

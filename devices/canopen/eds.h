@@ -71,17 +71,28 @@ struct EdsError {
   std::string message() const;  ///< "file:line: reason" ("file:line: warning: reason")
 };
 
+/// How the reader treats the CiA 306 deviations that EDS/DCF writing tools produce and masters
+/// tolerate (a RECORD with CompactSubObj, counts one too high, no 0x1000, a RECORD without sub 0,
+/// no DefaultValue below a LowLimit; list in docs/runtime.md, "EDS files"). Tolerant loads the file
+/// with a warning per deviation saying how it is read; Strict rejects it.
+enum class EdsStrictness { Tolerant, Strict };
+
 /// Parses EDS text. On error returns nullopt and fills `error` (the error with the lowest line).
 /// Warnings (the dictionary is still built) go to `warnings` when given.
 std::optional<ObjectDictionary> parse_eds(std::string_view text, const std::string& file_name, EdsError& error,
-                                          EdsFileInfo* info = nullptr, std::vector<EdsError>* warnings = nullptr);
+                                          EdsFileInfo* info = nullptr, std::vector<EdsError>* warnings = nullptr,
+                                          EdsStrictness strictness = EdsStrictness::Tolerant);
+/// Reads the file with sim::read_input_file (a regular file of bounded size; a FIFO or device is
+/// an error, never a hang) and parses it.
 std::optional<ObjectDictionary> load_eds(const std::string& path, EdsError& error, EdsFileInfo* info = nullptr,
-                                         std::vector<EdsError>* warnings = nullptr);
+                                         std::vector<EdsError>* warnings = nullptr,
+                                         EdsStrictness strictness = EdsStrictness::Tolerant);
 
 /// Every error and warning of an EDS, in line order (`vplant eds --check FILE`). Empty = a clean,
-/// CiA 306-conformant file.
-std::vector<EdsError> check_eds(std::string_view text, const std::string& file_name);
-std::vector<EdsError> check_eds_file(const std::string& path);
+/// CiA 306-conformant file. Strict by default: a checker reports deviations as errors.
+std::vector<EdsError> check_eds(std::string_view text, const std::string& file_name,
+                                EdsStrictness strictness = EdsStrictness::Strict);
+std::vector<EdsError> check_eds_file(const std::string& path, EdsStrictness strictness = EdsStrictness::Strict);
 
 /// Writes `od` as a complete CiA 306 EDS: [FileInfo], [DeviceInfo], [DummyUsage], [Comments],
 /// the three object lists and every object and sub-index section. Node-relative defaults are

@@ -22,6 +22,14 @@ void Diagnostics::warning(int line, std::string reason) {
   syntax_.push_back(false);
 }
 
+void Diagnostics::deviation(int line, const std::string& reason, const std::string& reading) {
+  if (strict_) {
+    error(line, reason);
+  } else {
+    warning(line, reason + ": " + reading);
+  }
+}
+
 std::vector<EdsError> Diagnostics::sorted() const {
   std::vector<EdsError> out = items_;
   std::stable_sort(out.begin(), out.end(), [](const EdsError& a, const EdsError& b) { return a.line < b.line; });

@@ -13,12 +13,16 @@ namespace canopen::eds_detail {
 
 class Diagnostics {
  public:
-  explicit Diagnostics(std::string file) : file_(std::move(file)) {}
+  explicit Diagnostics(std::string file, bool strict = true) : file_(std::move(file)), strict_(strict) {}
   void error(int line, std::string reason);
   /// An error in the INI layer itself: it can make later checks fail at other lines, so the
   /// first syntax error is what parse_eds() reports when there is one.
   void syntax_error(int line, std::string reason);
   void warning(int line, std::string reason);
+  /// A CiA 306 deviation that writing tools produce and masters tolerate (docs/runtime.md, "EDS
+  /// files"): strict, an error; otherwise a warning saying how the file is read (`reading`).
+  void deviation(int line, const std::string& reason, const std::string& reading);
+  bool strict() const { return strict_; }
   bool has_errors() const { return errors_ > 0; }
   std::size_t error_count() const { return static_cast<std::size_t>(errors_); }
   /// Errors and warnings in line order (stable: same line keeps discovery order).
@@ -28,6 +32,7 @@ class Diagnostics {
 
  private:
   std::string file_;
+  bool strict_;
   std::vector<EdsError> items_;
   std::vector<bool> syntax_;
   int errors_ = 0;

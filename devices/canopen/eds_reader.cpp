@@ -21,6 +21,7 @@ std::string hex4(unsigned v) {
   return s;
 }
 std::string hex_index(unsigned index) { return "0x" + hex4(index); }
+bool is_pdo_mapping(unsigned index) { return (index >= 0x1600 && index <= 0x17FF) || (index >= 0x1A00 && index <= 0x1BFF); }
 std::string code_name(ObjectCode c) {
   switch (c) {
     case ObjectCode::Domain: return "DOMAIN";
@@ -181,6 +182,7 @@ class Reader {
   void apply_names(std::uint16_t index, const IniSection& s, unsigned count);
   void apply_values(std::uint16_t index, const IniSection& s, unsigned count);
   void check_default_in_limits(const OdEntry& e, int line);
+  void check_cob_ids();
   void check_mandatory();
   void add_dummy_objects();
   void add_compact_pdos();
@@ -417,6 +419,15 @@ void Reader::read_list_entries(ListKind kind) {
       diag_.warning(k.line, hex_index(idx) + " is a mandatory object: it belongs in [MandatoryObjects]");
     }
   }
+  // Entries 1..k present and SupportedObjects > k: the count is too high, nothing is out of place.
+  const std::uint64_t present = positions.size();
+  if (present < *count && (present == 0 || *positions.rbegin() == present)) {
+    diag_.deviation(count_key->line,
+                    "SupportedObjects=" + std::to_string(*count) + " but [" + name + "] lists " + std::to_string(present) +
+                        (present == 1 ? " entry" : " entries"),
+                    "the " + std::to_string(present) + (present == 1 ? " entry listed is read" : " entries listed are read"));
+    return;
+  }
   for (std::uint64_t p = 1; p <= *count; ++p) {
     if (!positions.count(p)) {
       diag_.error(count_key->line, "entry " + std::to_string(p) + " missing in [" + name + "] (SupportedObjects=" +
@@ -543,8 +554,10 @@ bool Reader::build_entry(std::uint16_t index, std::uint8_t sub, const std::strin
   ParsedValue def;
   def.bytes.assign(type_size(type), 0);
   int default_line = s.line;
+  bool default_given = false;
   for (const char* key : {"DEFAULTVALUE", "PARAMETERVALUE"}) {  // a DCF's ParameterValue wins
     if (const auto* k = s.take(key)) {
+      default_given = default_given || !k->value.empty();
       std::string reason;
       auto v = parse_value(type, k->value, true, reason);
       if (!v) {
@@ -596,6 +609,21 @@ bool Reader::build_entry(std::uint16_t index, std::uint8_t sub, const std::strin
   e.low_limit = limits[0];
   e.high_limit = limits[1];
   default_lines_[{index, sub}] = default_line;
+  if (!default_given && !e.node_id_relative) {
+    // No DefaultValue means 0, which the limits may exclude (typical of write-only commands).
+    const bool below = e.low_limit && compare_values(type, e.default_value, *e.low_limit) < 0;
+    const bool above = !below && e.high_limit && compare_values(type, e.default_value, *e.high_limit) > 0;
+    if (below || above) {
+      const Bytes& limit = below ? *e.low_limit : *e.high_limit;
+      const std::string limit_text = std::string(below ? "LowLimit " : "HighLimit ") + format_value(type, limit, false);
+      diag_.deviation(default_line, "no DefaultValue, and 0 is " + std::string(below ? "below " : "above ") + limit_text,
+                      "the entry starts at " + limit_text);
+      if (diag_.strict()) return true;
+      e.default_value = limit;
+      e.value = limit;
+      return true;
+    }
+  }
   check_default_in_limits(e, default_line);
   return true;
 }
@@ -681,7 +709,16 @@ void Reader::build_object(std::uint16_t index, const ObjectSections& secs) {
     compact_count = *v;
   }
   if (compact_count > 0) {
-    if (code != ObjectCode::Array) {
+    if (code == ObjectCode::Record) {
+      // DCFs of a widely used stack describe the PDO mapping records (0x1600...) this way.
+      std::string reading = "read as " + std::to_string(compact_count) + " sub-indices of the record's DataType, like an ARRAY";
+      if (is_pdo_mapping(index)) reading += "; sub 0 (number of mapped objects) counts the leading non-zero entries";
+      diag_.deviation(compact->line, "CompactSubObj is only allowed for ARRAY objects, and [" + s.name + "] is a RECORD", reading);
+      if (diag_.strict()) {
+        failed_.insert(index);
+        return;
+      }
+    } else if (code != ObjectCode::Array) {
       diag_.error(compact->line, "CompactSubObj is only allowed for ARRAY objects");
       failed_.insert(index);
       return;
@@ -700,6 +737,17 @@ void Reader::build_object(std::uint16_t index, const ObjectSections& secs) {
     }
     od_.add_object(index, name, code).obj_flags = flags;
     build_compact_array(index, secs, name);
+    if (code == ObjectCode::Record && is_pdo_mapping(index) && od_.entry(index, 1)) {
+      // A mapping's sub 0 is the number of objects mapped, which masters write: not the ARRAY's
+      // read-only count of sub-indices.
+      OdEntry& count = *od_.entry(index, 0);
+      std::uint8_t mapped = 0;
+      while (mapped < compact_count && decode_unsigned(od_.entry(index, static_cast<std::uint8_t>(mapped + 1))->default_value) != 0)
+        ++mapped;
+      count.default_value = count.value = Bytes{mapped};
+      count.access = od_.entry(index, 1)->access;
+      count.name = "Number of mapped objects";
+    }
     return;
   }
 
@@ -719,14 +767,28 @@ void Reader::build_object(std::uint16_t index, const ObjectSections& secs) {
     const auto v = parse_count(subnumber->value, 255, reason);
     if (!v) {
       diag_.error(subnumber->line, "SubNumber: " + reason);
+    } else if (*v > secs.subs.size()) {
+      diag_.deviation(subnumber->line,
+                      "SubNumber=" + std::to_string(*v) + " but [" + s.name + "] has " + std::to_string(secs.subs.size()) +
+                          " sub-index sections",
+                      "the " + std::to_string(secs.subs.size()) + " sections given are read");
     } else if (*v != secs.subs.size()) {
       diag_.error(subnumber->line, "SubNumber=" + std::to_string(*v) + " but [" + s.name + "] has " +
                                        std::to_string(secs.subs.size()) + " sub-index sections");
     }
   }
-  if (!secs.subs.count(0)) diag_.error(s.line, "missing [" + hex4(index) + "sub0] (highest sub-index supported)");
+  const unsigned highest = secs.subs.empty() ? 0u : secs.subs.rbegin()->first;
+  const bool add_sub0 = !secs.subs.count(0);
+  if (add_sub0) {
+    diag_.deviation(s.line, "missing [" + hex4(index) + "sub0] (highest sub-index supported)",
+                    "sub 0 is UNSIGNED8, ro, " + std::to_string(highest) + " (the highest sub-index given)");
+  }
   od_.add_object(index, name, code).obj_flags = flags;
   build_record(index, secs);
+  if (add_sub0 && !diag_.strict()) {
+    od_.add_entry(index, 0, "Highest sub-index supported", DataType::Unsigned8, Access::ReadOnly,
+                  Bytes{static_cast<std::uint8_t>(highest)});
+  }
 }
 
 void Reader::build_record(std::uint16_t index, const ObjectSections& secs) {
@@ -854,9 +916,15 @@ void Reader::check_mandatory() {
   const IniSection* list = ini_.find("MANDATORYOBJECTS");
   if (!list || mandatory_list_broken_) return;  // already reported
   for (std::uint16_t index : {0x1000, 0x1001, 0x1018}) {
-    if (!listed_.count(index)) {
-      diag_.error(list->line, "mandatory object " + hex_index(index) + " missing (CiA 306: 0x1000, 0x1001, 0x1018)");
+    if (listed_.count(index)) continue;
+    const std::string reason = "mandatory object " + hex_index(index) + " missing (CiA 306: 0x1000, 0x1001, 0x1018)";
+    if (index != 0x1000 || objects_.count(index)) {
+      diag_.error(list->line, reason);
+      continue;
     }
+    // Every CiA 301 device has a device type; 0 is "no standardised device profile".
+    diag_.deviation(list->line, reason, "0x1000 is UNSIGNED32, ro, 0x00000000 (no device profile)");
+    if (!diag_.strict()) od_.add_var(0x1000, "Device type", DataType::Unsigned32, Access::ReadOnly, Bytes{0, 0, 0, 0});
   }
 }
 
@@ -934,7 +1002,8 @@ void Reader::check_pdo_counts() {
   if (!s) return;
   for (bool receive : {true, false}) {
     const auto* k = s->find(receive ? "NROFRXPDO" : "NROFTXPDO");
-    if (!k) continue;
+    std::string reason;
+    if (!k || !parse_count(k->value, 512, reason)) continue;  // a bad value was reported where it was read
     const std::uint16_t base = receive ? 0x1400 : 0x1800;
     unsigned count = 0;
     for (unsigned i = 0; i < 512; ++i)
@@ -943,6 +1012,39 @@ void Reader::check_pdo_counts() {
     if (count != declared) {
       diag_.warning(k->line, k->name + "=" + std::to_string(declared) + " but the file describes " + std::to_string(count) +
                                  (receive ? " RPDOs" : " TPDOs"));
+    }
+  }
+}
+
+void Reader::check_cob_ids() {
+  // CiA 301 §7.5.2 (0x1005, 0x1012, 0x1014, 0x1200-0x12FF, 0x1400-0x15FF, 0x1800-0x19FF): with
+  // bit 29 clear the CAN-ID has 11 bits, so bits 11-28 must be 0; such a COB-ID matches no frame
+  // (an SDO download of it aborts 06090030h). Checked for every node-ID a "$NODEID+" value can take.
+  for (const auto& [index, obj] : od_.objects()) {
+    const bool services = index == 0x1005 || index == 0x1012 || index == 0x1014;
+    const bool channel = (index >= 0x1200 && index <= 0x12FF) || (index >= 0x1400 && index <= 0x15FF) ||
+                         (index >= 0x1800 && index <= 0x19FF);
+    if (!services && !channel) continue;
+    for (const auto& [sub, e] : obj.entries) {
+      const bool cob_entry = services ? sub == 0 : (sub == 1 || (sub == 2 && index < 0x1300));
+      if (!cob_entry || type_size(e.type) != 4) continue;
+      const std::uint64_t base = decode_unsigned(e.default_value);
+      const int line = default_lines_.count({index, sub}) ? default_lines_.at({index, sub}) : 0;
+      const std::string where = hex_index(index) + " sub " + std::to_string(sub) + ": COB-ID " +
+                                (e.node_id_relative ? "$NODEID+" : "") + format_value(DataType::Unsigned32, e.default_value, false);
+      for (unsigned id = e.node_id_relative ? 1 : 0; id <= (e.node_id_relative ? 127u : 0u); ++id) {
+        const std::uint64_t v = base + id;
+        const std::string with_id = e.node_id_relative ? " with node-ID " + std::to_string(id) : "";
+        if (v > 0xFFFFFFFFu) {
+          diag_.error(line, where + with_id + " overflows 32 bits");
+          break;
+        }
+        const bool invalid_flag = !services && (v & 0x80000000u);  // "not valid": the CAN-ID is unused
+        if (!invalid_flag && !(v & 0x20000000u) && (v & 0x1FFFF800u)) {
+          diag_.error(line, where + with_id + " has CAN-ID bits above 0x7FF without bit 29 (29-bit CAN-ID) set");
+          break;
+        }
+      }
     }
   }
 }
@@ -1045,6 +1147,7 @@ std::optional<ObjectDictionary> Reader::run() {
   add_dummy_objects();
   add_compact_pdos();
   check_pdo_counts();
+  check_cob_ids();
   check_identity();
   check_default_mappings();
   warn_unknown_keys();

@@ -3,11 +3,14 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <sstream>
+#include <string_view>
+
+#include "sim/file_reader.h"
 
 namespace canopen {
 
@@ -31,6 +34,25 @@ bool parse_hex_bytes(const std::string& text, Bytes& out) {
     out.push_back(static_cast<std::uint8_t>(hi << 4 | lo));
   }
   return true;
+}
+
+// A line as it can be printed: printable ASCII as is, every other byte as \xNN, at most 80
+// characters of the line (a store file could hold one line of megabytes).
+std::string escaped(std::string_view line) {
+  constexpr std::size_t kMax = 80;
+  std::string out;
+  for (std::size_t i = 0; i < line.size() && i < kMax; ++i) {
+    const auto c = static_cast<unsigned char>(line[i]);
+    if (c >= 0x20 && c < 0x7F && c != '\\') {
+      out += static_cast<char>(c);
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02X", c);
+      out += buf;
+    }
+  }
+  if (line.size() > kMax) out += "...";
+  return out;
 }
 
 bool write_all(int fd, const std::string& data) {
@@ -63,39 +85,54 @@ void ParameterStore::erase_range(std::uint16_t first, std::uint16_t last) {
   }
 }
 
+std::string ParameterStore::where(const Value& v) const {
+  return v.line > 0 ? path_ + ":" + std::to_string(v.line) : path_;
+}
+
 bool ParameterStore::load(std::string& error) {
   if (path_.empty()) return true;  // memory only: what was saved stays, like NV memory in a run
   values_.clear();
-  std::ifstream in(path_);
-  if (!in) return true;  // nothing stored yet
+  std::string text, reason;
+  switch (sim::read_input_file(path_, text, reason)) {
+    case sim::ReadStatus::Missing: return true;  // nothing stored yet
+    case sim::ReadStatus::Failed: error = path_ + ": " + reason; return false;
+    case sim::ReadStatus::Ok: break;
+  }
   std::map<Key, Value> loaded;
-  std::string line;
   int line_no = 0;
-  while (std::getline(in, line)) {
+  for (std::size_t start = 0; start < text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    std::string_view line(text.data() + start, end - start);
+    start = end + 1;
     ++line_no;
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     if (line.empty() || line[0] == '#') continue;
+    const std::string at = path_ + ":" + std::to_string(line_no) + ": ";
     // Format: IIII:SS=HEX or IIII:SS=$NODEID+HEX (hex, upper or lower case).
-    const auto colon = line.find(':');
-    const auto equals = line.find('=');
-    Value v;
-    std::string hex = equals == std::string::npos ? std::string{} : line.substr(equals + 1);
     Bytes key_bytes;
-    const bool key_ok = colon == 4 && equals == 7 && parse_hex_bytes(line.substr(0, 4) + line.substr(5, 2), key_bytes);
+    const bool key_ok = line.size() >= 8 && line[4] == ':' && line[7] == '=' &&
+                        parse_hex_bytes(std::string(line.substr(0, 4)) + std::string(line.substr(5, 2)), key_bytes);
     if (!key_ok) {
-      error = path_ + ":" + std::to_string(line_no) + ": malformed entry '" + line + "'";
+      error = at + "malformed entry '" + escaped(line) + "' (expected IIII:SS=HEX)";
       return false;
     }
-    const unsigned index = static_cast<unsigned>(key_bytes[0]) << 8 | key_bytes[1];
-    const unsigned sub = key_bytes[2];
-    if (hex.rfind("$NODEID+", 0) == 0) {
+    Value v;
+    v.line = line_no;
+    std::string_view hex = line.substr(8);
+    if (hex.substr(0, 8) == "$NODEID+") {
       v.node_relative = true;
-      hex = hex.substr(8);
+      hex.remove_prefix(8);
     }
-    if (!parse_hex_bytes(hex, v.bytes)) {
-      error = path_ + ":" + std::to_string(line_no) + ": malformed value '" + hex + "'";
+    if (!parse_hex_bytes(std::string(hex), v.bytes)) {
+      error = at + "malformed value '" + escaped(hex) + "' (expected pairs of hex digits)";
       return false;
     }
-    loaded[{static_cast<std::uint16_t>(index), static_cast<std::uint8_t>(sub)}] = std::move(v);
+    const Key key{static_cast<std::uint16_t>(key_bytes[0] << 8 | key_bytes[1]), key_bytes[2]};
+    if (auto it = loaded.find(key); it != loaded.end()) {
+      error = at + "entry " + std::string(line.substr(0, 7)) + " given twice (first at line " + std::to_string(it->second.line) + ")";
+      return false;
+    }
+    loaded[key] = std::move(v);
   }
   values_ = std::move(loaded);
   return true;

@@ -19,17 +19,22 @@ class ParameterStore {
   struct Value {
     bool node_relative = false;  ///< stored as "$NODEID+x": the node-ID is added when loaded
     Bytes bytes;
+    int line = 0;  ///< the line of the store file it was read from (0: put by the program)
   };
   using Key = std::pair<std::uint16_t, std::uint8_t>;
 
   explicit ParameterStore(std::string path = {}) : path_(std::move(path)) {}
 
   const std::string& path() const { return path_; }
+  /// "file:line" of a value read from the file ("file" alone for one put by the program).
+  std::string where(const Value& v) const;
   void set_path(std::string path) { path_ = std::move(path); }
 
   /// Reads the file (a missing file is an empty store; without a path the values in memory
-  /// are kept, so they survive power cycles within a run). Malformed lines are reported in
-  /// `error` as "file:line: reason" and the store stays empty (never a half-read set).
+  /// are kept, so they survive power cycles within a run). Anything but a regular file of at
+  /// most sim::kMaxInputFileBytes is refused ("file: reason"); a malformed line is reported as
+  /// "file:line: reason" (its bytes escaped) and the store stays empty (never a half-read set).
+  /// The values are not checked against a dictionary here: StoreRestore does that.
   bool load(std::string& error);
   /// Writes the file atomically. Without a path it only keeps the values in memory.
   bool save(std::string& error) const;

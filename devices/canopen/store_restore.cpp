@@ -1,5 +1,7 @@
 #include "devices/canopen/store_restore.h"
 
+#include <cstdio>
+
 #include "devices/canopen/node.h"
 #include "sim/log.h"
 
@@ -8,6 +10,19 @@ namespace canopen {
 namespace {
 constexpr std::uint16_t kStore = 0x1010;
 constexpr std::uint16_t kRestore = 0x1011;
+
+// An integer value in decimal (limits are only set on numbers; other types print as bytes).
+std::string number_text(DataType type, std::span<const std::uint8_t> bytes) {
+  if (is_signed_integer(type)) return std::to_string(decode_signed(bytes));
+  if (is_unsigned_integer(type)) return std::to_string(decode_unsigned(bytes));
+  std::string hex;
+  char buf[4];
+  for (auto b : bytes) {
+    std::snprintf(buf, sizeof buf, "%02X", b);
+    hex += buf;
+  }
+  return "0x" + hex;
+}
 }  // namespace
 
 StoreRestore::StoreRestore(Node& node) : node_(node), store_(node.policy().store.path) {}
@@ -51,6 +66,8 @@ void StoreRestore::bind_objects() {
 
 bool StoreRestore::power_on(std::string& error) {
   pending_restore_.clear();
+  reported_.clear();
+  rejected_.clear();
   store_.set_path(node_.policy().store.path);
   const bool ok = store_.load(error);
   for (const auto& p : node_.policy().store.preset) store_.put(p.index, p.sub, ParameterStore::Value{false, p.bytes});
@@ -69,13 +86,55 @@ void StoreRestore::load_area(std::uint16_t first, std::uint16_t last) {
   od.reset_range(first, last, node_.node_id());
   for (const auto& [key, v] : store_.values()) {
     if (key.first < first || key.first > last || in_pending_restore(key.first)) continue;
-    OdEntry* e = od.entry(key.first, key.second);
-    if (!e) continue;
-    const std::size_t fixed = type_size(e->type);
-    if (fixed != 0 && v.bytes.size() != fixed) continue;  // stale store from another OD layout
-    e->value = v.bytes;
-    if (v.node_relative) encode_unsigned(decode_unsigned(e->value) + node_.node_id(), e->value);
+    if (device_stored_.count(key) && !od.entry(key.first, key.second)) continue;  // a private cell
+    Bytes value;
+    if (const std::string why = refusal(key, v, value); !why.empty()) {
+      if (reported_.insert(key).second) {
+        rejected_.push_back(store_.where(v) + ": " + why);
+        sim::log(sim::LogLevel::Warn, "node {}: {}; the entry keeps its default", node_.name(), rejected_.back());
+      }
+      continue;
+    }
+    od.entry(key.first, key.second)->value = std::move(value);
   }
+}
+
+std::string StoreRestore::refusal(const ParameterStore::Key& key, const ParameterStore::Value& v, Bytes& out) const {
+  char name[24];
+  std::snprintf(name, sizeof name, "%04Xh sub %u", key.first, key.second);
+  const OdEntry* e = node_.od().entry(key.first, key.second);
+  if (!e) return std::string(name) + (node_.od().object(key.first) ? ": no such sub-index" : ": no such object");
+  if (e->access == Access::Const) return std::string(name) + " is constant";
+  if (!e->writable() && !device_stored_.count(key)) return std::string(name) + " is read-only";
+  const std::size_t fixed = type_size(e->type);
+  const std::string type(type_name(e->type));
+  if (fixed != 0 && v.bytes.size() != fixed) {
+    return std::to_string(v.bytes.size()) + "-byte value for " + name + " (" + type + ", " + std::to_string(fixed) + " bytes)";
+  }
+  if (fixed == 0 && e->max_length != 0 && v.bytes.size() > e->max_length) {
+    return std::to_string(v.bytes.size()) + "-byte value for " + name + " (at most " + std::to_string(e->max_length) + " bytes)";
+  }
+  out = v.bytes;
+  if (v.node_relative) {
+    if (fixed == 0 || fixed > 8 || !(is_signed_integer(e->type) || is_unsigned_integer(e->type))) {
+      return "$NODEID+ value for " + std::string(name) + ", which is not an integer";
+    }
+    const std::uint64_t base = decode_unsigned(v.bytes);
+    const std::uint64_t sum = base + node_.node_id();
+    const bool overflow = fixed < 8 ? (sum >> (8 * fixed)) != 0 : sum < base;
+    if (overflow) {
+      return "$NODEID+" + std::to_string(base) + " overflows " + type + " with node-ID " + std::to_string(node_.node_id()) +
+             " (" + name + ")";
+    }
+    encode_unsigned(sum, out);
+  }
+  if (e->low_limit && compare_values(e->type, out, *e->low_limit) < 0) {
+    return "value " + number_text(e->type, out) + " of " + name + " is below its low limit " + number_text(e->type, *e->low_limit);
+  }
+  if (e->high_limit && compare_values(e->type, out, *e->high_limit) > 0) {
+    return "value " + number_text(e->type, out) + " of " + name + " is above its high limit " + number_text(e->type, *e->high_limit);
+  }
+  return {};
 }
 
 SdoAbort StoreRestore::save_group(std::uint8_t sub) {

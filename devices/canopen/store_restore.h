@@ -35,6 +35,17 @@ class StoreRestore {
   SdoAbort restore_group(std::uint8_t sub);
 
   ParameterStore& memory() { return store_; }
+  /// Keys the device itself saves and reads: a read-only entry (e.g. a position offset saved
+  /// with save_entry), whose stored value loads although an SDO download could not write it, or
+  /// a private cell that is no dictionary entry (e.g. characteristic points), left to the device.
+  /// Stored values for other read-only, constant or missing entries are refused and reported.
+  void allow_device_stored(std::uint16_t index, std::uint8_t first_sub, std::uint8_t last_sub) {
+    for (unsigned sub = first_sub; sub <= last_sub; ++sub) device_stored_.insert({index, static_cast<std::uint8_t>(sub)});
+  }
+  /// Every value of the store file refused since power-on, as "file:line: reason" (also logged
+  /// as a warning): it fails a check an SDO download would make (no such entry, read-only or
+  /// constant, wrong length, outside the limits, a node-relative value that overflows).
+  const std::vector<std::string>& rejected() const { return rejected_; }
   /// Injected failure of the non-volatile memory (fault injection): save/restore abort
   /// with 0x06060000.
   void set_failing(bool failing) { failing_ = failing; }
@@ -45,10 +56,14 @@ class StoreRestore {
   Ranges group_ranges(std::uint8_t sub) const;
   bool in_pending_restore(std::uint16_t index) const;
   static bool storable(const OdEntry& e);
+  std::string refusal(const ParameterStore::Key& key, const ParameterStore::Value& v, Bytes& out) const;
 
   Node& node_;
   ParameterStore store_;
   std::set<std::uint8_t> pending_restore_;
+  std::set<ParameterStore::Key> device_stored_;
+  std::set<ParameterStore::Key> reported_;
+  std::vector<std::string> rejected_;
   bool failing_ = false;
 };
 

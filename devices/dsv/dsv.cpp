@@ -157,6 +157,8 @@ void Dsv::install_device_hooks() {
   }
   // Non-volatile memory: the characteristic points are stored with the application group, a
   // failing memory raises EMCY 0x5520 besides the SDO abort 0x06060000.
+  node_owner_->store().allow_device_stored(DsvParameters::kCurveStoreIndex, DsvParameters::kCurveStoreFirstSub,
+                                           DsvParameters::kCurveStoreLastSub);
   for (std::uint8_t sub : {std::uint8_t{1}, std::uint8_t{3}}) {
     od.add_observer(0x1010, sub, [this](OdEntry&, Origin o) {
       if (o != Origin::Sdo) return;

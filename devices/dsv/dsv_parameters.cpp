@@ -14,8 +14,9 @@ using canopen::Origin;
 using canopen::SdoAbort;
 
 namespace {
-constexpr std::uint16_t kCurveStoreIndex = 0x2344;
-constexpr std::uint8_t kCurveStoreSub = 0x10;  // 0x10..0x25: 11 points × 2 solenoids
+constexpr std::uint16_t kCurveStoreIndex = DsvParameters::kCurveStoreIndex;
+constexpr std::uint8_t kCurveStoreSub = DsvParameters::kCurveStoreFirstSub;
+static_assert(DsvParameters::kCurveStoreLastSub == kCurveStoreSub + 2 * 11 - 1);
 
 SdoAbort range(std::int64_t v, std::int64_t lo, std::int64_t hi) {
   if (v > hi) return SdoAbort::ValueTooHigh;

@@ -43,6 +43,9 @@ class DsvParameters {
   /// Characteristic points in the store (pseudo sub-indices of 0x2344 ≥ 0x10, saved with the
   /// application group): into / out of the curves.
   void save_curves(canopen::ParameterStore& memory) const;
+  /// The pseudo sub-indices save_curves() uses (index 0x2344): the store leaves them to the DSV.
+  static constexpr std::uint16_t kCurveStoreIndex = 0x2344;
+  static constexpr std::uint8_t kCurveStoreFirstSub = 0x10, kCurveStoreLastSub = 0x25;  // 11 points × 2 solenoids
   void load_curves(const canopen::ParameterStore& memory);
   void reset_curves();
 

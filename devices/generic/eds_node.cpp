@@ -10,7 +10,8 @@ std::unique_ptr<EdsNode> EdsNode::load(const std::string& eds_path, const Device
   canopen::EdsError eds_error;
   canopen::EdsFileInfo info;
   std::vector<canopen::EdsError> warnings;
-  auto od = canopen::load_eds(eds_path, eds_error, &info, &warnings);
+  auto od = canopen::load_eds(eds_path, eds_error, &info, &warnings,
+                              options.strict_eds ? canopen::EdsStrictness::Strict : canopen::EdsStrictness::Tolerant);
   if (!od) {
     error = eds_error.message();
     return nullptr;

@@ -102,6 +102,7 @@ void Application::bind() {
   });
 
   // The offset is a read-only object but is saved with "save all" [M §9.17].
+  node_.store().allow_device_stored(obj::kOffset, 1, 1);
   od.add_observer(obj::kStore, 1, [this](OdEntry&, Origin origin) {
     if (origin == Origin::Sdo) node_.store().save_entry(obj::kOffset, 1);
   });

@@ -190,6 +190,7 @@ void Application::stage_offset() {
 }
 
 void Application::bind_storage() {
+  node_.store().allow_device_stored(kOffsetCellIndex, kOffsetCellSub, kOffsetCellSub);  // stage_offset()
   auto& od = node_.od();
   for (std::uint8_t sub = 1; sub <= 4; ++sub) {
     // A failing EEPROM: the abort comes from the stack, the EMCY from here.

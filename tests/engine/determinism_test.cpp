@@ -56,7 +56,7 @@ std::uint64_t trace_hash(std::uint64_t seed, const std::string& path) {
 }  // namespace
 
 TEST(Determinism, SameSeedGivesAByteIdenticalTrace) {
-  const std::string a = vtest::unique_temp_path("determinism_a", ".log"), b = vtest::unique_temp_path("determinism_b", ".log");
+  const vtest::TempPath a("determinism_a", ".log"), b("determinism_b", ".log");
   const auto ha = trace_hash(7, a);
   const auto hb = trace_hash(7, b);
   EXPECT_EQ(ha, hb);

@@ -47,7 +47,8 @@ script:
 }  // namespace
 
 TEST(Outputs, TraceCsvPlotAndJunit) {
-  const std::string dir = vtest::unique_temp_path("vplant-outputs");
+  const vtest::TempPath out_dir("vplant-outputs");  // removed with what the run wrote into it
+  const std::string& dir = out_dir.str();
   std::string text = kRun;
   for (auto p = text.find("OUT"); p != std::string::npos; p = text.find("OUT")) text.replace(p, 3, dir);
   const auto r = vtest::run_text(text);

@@ -226,3 +226,27 @@ buses:
     EXPECT_NE(std::string(e.what()).find("'socketcand:ADDR:PORT'"), std::string::npos) << e.what();
   }
 }
+
+TEST(Durations, OutOfRangeIsNotCalledMalformed) {
+  std::string problem;
+  EXPECT_FALSE(parse_duration("1e300s", &problem));
+  EXPECT_EQ(problem, "is out of range (at most 1e9 s, about 31 years)");
+  EXPECT_FALSE(parse_duration("1e400", &problem));
+  EXPECT_EQ(problem, "is out of range (at most 1e9 s, about 31 years)");
+  EXPECT_FALSE(parse_duration("-1s", &problem));
+  EXPECT_EQ(problem, "is negative (a duration is 0 or more)");
+  EXPECT_FALSE(parse_duration("10 parsecs", &problem));
+  EXPECT_EQ(problem, "is not a duration (e.g. 10ms, 1.5s, 250us)");
+}
+
+// yaml-cpp gives up at its depth limit with the message "bad file"; the message says why, where.
+TEST(ScenarioLoader, DeepNestingIsReportedAsNesting) {
+  try {
+    parse_scenario("nodes: " + std::string(100000, '['), "deep.yaml", ".");
+    ADD_FAILURE() << "accepted";
+  } catch (const LoadError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.rfind("deep.yaml:", 0), 0u) << message;
+    EXPECT_NE(message.find(": nesting deeper than "), std::string::npos) << message;
+  }
+}

@@ -1,6 +1,7 @@
 // The plant description in YAML: the shipped reference file equals the built-in reference plant,
 // and each kind of error is reported at its file:line:col.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstring>
 #include <fstream>
@@ -48,7 +49,8 @@ TEST(PlantYaml, EmittedYamlParsesBackToTheSameDescription) {
 
 // Parses `text` (a whole file with a `plant:` section) and returns the error message.
 std::string error_of(const std::string& text) {
-  const std::string path = vtest::unique_temp_path("bad", ".plant.yaml");
+  const vtest::TempPath temp("bad", ".plant.yaml");
+  const std::string& path = temp.str();
   std::ofstream(path) << text;
   try {
     load_plant_file(path);
@@ -81,8 +83,8 @@ const char* kMinimal = R"(plant:
 )";
 
 TEST(PlantYaml, MinimalFileIsAccepted) {
-  const std::string path = vtest::unique_temp_path("good", ".plant.yaml");
-  std::ofstream(path) << kMinimal;
+  const vtest::TempPath path("good", ".plant.yaml");
+  std::ofstream(path.str()) << kMinimal;
   const PlantDescription d = load_plant_file(path);
   EXPECT_EQ(d.components.size(), 4u);
   EXPECT_NO_THROW(Plant{d});
@@ -132,6 +134,25 @@ TEST(PlantYaml, OtherStructuralErrorsArePlacedToo) {
   EXPECT_EQ(error_of(with(kMinimal, "[tank.port, relief.T]", "[tank.port, relief.T, relief.P]")),
             "17:36: port 'relief.P' is connected twice");
   EXPECT_EQ(error_of("plant:\n  components: [\n"), "3:1: end of sequence flow not found");
+}
+
+// yaml-cpp stops at its depth limit with the message "bad file"; the reason must say what is wrong.
+TEST(PlantYaml, DeepNestingIsReportedAsNestingNotAsABadFile) {
+  const std::string message = error_of("plant:\n  components: " + std::string(100000, '[') + "\n");
+  EXPECT_NE(message.find(": nesting deeper than"), std::string::npos) << message;
+}
+
+TEST(PlantYaml, OnlyARegularFileIsRead) {
+  const vtest::TempPath dir("plant-fifo");
+  ASSERT_EQ(::mkdir(dir.c_str(), 0700), 0);
+  const std::string fifo = dir.str() + "/plant.yaml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);  // a blocking open() would wait for a writer forever
+  try {
+    load_plant_file(fifo);
+    ADD_FAILURE() << "a FIFO was read";
+  } catch (const DescriptionError& e) {
+    EXPECT_EQ(std::string(e.what()), fifo + ": not a regular file (a FIFO)");
+  }
 }
 
 }  // namespace

@@ -9,8 +9,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <string>
 #include <string_view>
+#include <system_error>
 
 namespace vtest {
 
@@ -27,5 +29,26 @@ inline std::string unique_temp_path(std::string_view stem, std::string_view suff
   std::remove(path.c_str());
   return path;
 }
+
+/// A unique_temp_path() that is removed when it goes out of scope, also when a failed assertion
+/// returns early: the file, a directory with its contents, and the ".tmp" sibling an atomic save
+/// leaves behind when it is killed.
+class TempPath {
+ public:
+  explicit TempPath(std::string_view stem, std::string_view suffix = {}) : path_(unique_temp_path(stem, suffix)) {}
+  TempPath(const TempPath&) = delete;
+  TempPath& operator=(const TempPath&) = delete;
+  ~TempPath() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+    std::filesystem::remove(path_ + ".tmp", ec);
+  }
+  const std::string& str() const { return path_; }
+  operator const std::string&() const { return path_; }  // NOLINT: used where a path string is expected
+  const char* c_str() const { return path_.c_str(); }
+
+ private:
+  std::string path_;
+};
 
 }  // namespace vtest

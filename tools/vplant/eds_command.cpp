@@ -79,7 +79,9 @@ int run_eds(const EdsOptions& o) {
 Runner add_eds_command(CLI::App& app) {
   auto o = std::make_shared<EdsOptions>();
   app.add_option("device", o->product, "product name (see `vplant devices`)");
-  app.add_option("--check", o->check, "check an EDS file: print its errors and warnings as file:line");
+  app.add_option("--check", o->check,
+                 "check an EDS file: print its errors and warnings as file:line (strict: deviations that `node` and "
+                 "`run` load with a warning are errors here)");
   app.add_option("--variant", o->variant, "product variant");
   app.add_option("--setting", o->settings,
                  "knob=value: the EDS of the node with this configuration setting, e.g. its PDO mapping (repeatable)");

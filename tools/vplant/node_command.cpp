@@ -1,12 +1,13 @@
 // `vplant node`: one emulated node on a SocketCAN interface or the virtual bus, in real time
 // (a master under test talks to it) or in virtual time for a fixed duration.
-#include <csignal>
+#include <atomic>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "control/control_plane.h"
+#include "devices/canopen/parameter_store.h"
 #include "devices/generic/eds_node.h"
 #include "engine/runner.h"
 #include "devices/registry.h"
@@ -18,17 +19,25 @@
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exit_codes.h"
 #include "tools/vplant/key_value.h"
+#include "tools/vplant/stop_signals.h"
 
 namespace vplant {
 
 namespace {
 
-sim::Scheduler* g_running = nullptr;
-scenario::Runner* g_runner = nullptr;
+std::atomic<sim::Scheduler*> g_running{nullptr};
+std::atomic<scenario::Runner*> g_runner{nullptr};  // --ui: the node runs as a one-node scenario
 
-extern "C" void stop_on_signal(int) {
-  if (g_running) g_running->request_stop();
-  if (g_runner) g_runner->request_stop();
+bool stop_running_node() {
+  if (sim::Scheduler* s = g_running.load()) {
+    s->request_stop();
+    return true;
+  }
+  if (scenario::Runner* r = g_runner.load()) {
+    r->request_stop();
+    return true;
+  }
+  return false;
 }
 
 struct NodeOptions {
@@ -45,6 +54,7 @@ struct NodeOptions {
   bool virtual_time = false;
   std::string ui;
   bool ui_allow_remote = false;
+  bool strict = false;
 };
 
 /// `--ui`: the node runs as a one-node scenario (bus "main"), so the control plane sees it as it
@@ -90,13 +100,12 @@ int run_node_with_ui(const NodeOptions& o, const std::map<std::string, std::stri
   scenario::RunOptions ro;
   ro.trace = o.trace;
   ro.extension = plane.get();
+  ro.strict_eds = o.strict;
   try {
     scenario::Runner runner(s, scenario::default_environment(), ro);
-    g_runner = &runner;
-    std::signal(SIGINT, stop_on_signal);
-    std::signal(SIGTERM, stop_on_signal);
+    g_runner.store(&runner);
     const int rc = runner.run();
-    g_runner = nullptr;
+    g_runner.store(nullptr);
     return rc == 0 ? kExitOk : kExitBadInput;
   } catch (const scenario::LoadError& e) {
     std::fprintf(stderr, "vplant node: %s\n", e.what());
@@ -105,6 +114,7 @@ int run_node_with_ui(const NodeOptions& o, const std::map<std::string, std::stri
 }
 
 int run_node(const NodeOptions& o) {
+  install_stop_signals(stop_running_node);
   if (o.eds.empty() == o.device.empty()) {
     std::fprintf(stderr, "vplant node: give exactly one of --eds FILE or --device NAME\n");
     return kExitBadInput;
@@ -117,7 +127,16 @@ int run_node(const NodeOptions& o) {
   options.node_id = static_cast<std::uint8_t>(o.node_id);
   options.variant = o.variant;
   options.store_path = o.store;
+  options.strict_eds = o.strict;
   std::string error;
+  if (!o.store.empty()) {
+    // Read again at power-on; reading it now turns a bad file into exit 2 before anything runs.
+    canopen::ParameterStore probe(o.store);
+    if (!probe.load(error)) {
+      std::fprintf(stderr, "vplant node: --store %s\n", error.c_str());
+      return kExitBadInput;
+    }
+  }
   if (!parse_key_values(o.settings, options.settings, error)) {
     std::fprintf(stderr, "vplant node: --setting %s\n", error.c_str());
     return kExitBadInput;
@@ -174,9 +193,7 @@ int run_node(const NodeOptions& o) {
   scheduler.add_bus(&bus);
   device->node().attach(bus);
   scheduler.add(&device->node());
-  g_running = &scheduler;
-  std::signal(SIGINT, stop_on_signal);
-  std::signal(SIGTERM, stop_on_signal);
+  g_running.store(&scheduler);
 
   std::fprintf(stderr, "vplant node: %s node-ID %u on %s%s\n", o.eds.empty() ? o.device.c_str() : o.eds.c_str(),
                device->node().node_id(), o.can.empty() ? "the virtual bus" : o.can.c_str(),
@@ -187,7 +204,7 @@ int run_node(const NodeOptions& o) {
   } else {
     scheduler.run_until_stopped();
   }
-  g_running = nullptr;
+  g_running.store(nullptr);
   const std::string trace_error = trace ? trace->close() : std::string();
 
   const auto& st = scheduler.stats();
@@ -227,6 +244,7 @@ Runner add_node_command(CLI::App& app) {
   app.add_flag("--virtual", o->virtual_time, "virtual time (as fast as possible; needs --duration unless --ui)");
   app.add_option("--ui", o->ui, "[ADDR:]PORT: serve the live control plane (docs/api.md); virtual time starts paused");
   app.add_flag("--ui-allow-remote", o->ui_allow_remote, "allow --ui on a non-loopback address (no authentication!)");
+  app.add_flag("--strict", o->strict, "--eds: reject the CiA 306 deviations that are otherwise loaded with a warning");
   return [o] { return run_node(*o); };
 }
 

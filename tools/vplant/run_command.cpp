@@ -2,7 +2,6 @@
 // 0 every assertion held, 1 one failed, 2 bad input (file, option, interface).
 #include <unistd.h>
 
-#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -14,6 +13,7 @@
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exit_codes.h"
 #include "tools/vplant/key_value.h"
+#include "tools/vplant/stop_signals.h"
 
 namespace vplant {
 
@@ -32,13 +32,18 @@ struct RunArgs {
   bool ui_allow_remote = false;
   bool ui_run = false;
   double ui_speed = -1;
+  bool strict = false;
 };
 
-extern "C" void stop_run_on_signal(int) {
-  if (auto* r = scenario::active_runner()) r->request_stop();
+bool stop_active_run() {
+  auto* r = scenario::active_runner();
+  if (!r) return false;
+  r->request_stop();
+  return true;
 }
 
 int run(const RunArgs& a) {
+  install_stop_signals(stop_active_run);
   scenario::RunOptions o;
   std::string error;
   if (!parse_key_values(a.can, o.can, error)) {
@@ -46,9 +51,11 @@ int run(const RunArgs& a) {
     return kExitBadInput;
   }
   if (!a.duration.empty()) {
-    const auto d = scenario::parse_duration(a.duration);
+    std::string problem;
+    const auto d = scenario::parse_duration(a.duration, &problem);
     if (!d || d->count() <= 0) {
-      std::fprintf(stderr, "vplant run: --duration '%s' is not a duration (e.g. 10, 2.5s, 500ms)\n", a.duration.c_str());
+      if (d) problem = "is not positive";
+      std::fprintf(stderr, "vplant run: --duration '%s' %s\n", a.duration.c_str(), problem.c_str());
       return kExitBadInput;
     }
     o.duration = *d;
@@ -60,6 +67,7 @@ int run(const RunArgs& a) {
   o.csv = a.csv;
   o.junit = a.junit;
   o.quiet = a.quiet;
+  o.strict_eds = a.strict;
   o.progress = !a.quiet && ::isatty(STDERR_FILENO);
   // The control plane: --ui overrides the scenario's `ui:`; made once the scenario is loaded.
   std::unique_ptr<control::ControlPlane> ui;
@@ -83,8 +91,6 @@ int run(const RunArgs& a) {
     if (auto err = ui->bind(); !err.empty()) throw scenario::LoadError(mark, err);
     return ui.get();
   };
-  std::signal(SIGINT, stop_run_on_signal);
-  std::signal(SIGTERM, stop_run_on_signal);
   return scenario::run_scenario_file(a.scenario, scenario::default_environment(), o);
 }
 
@@ -109,6 +115,7 @@ Runner add_run_command(CLI::App& app) {
   app.add_flag("--ui-run", a->ui_run, "virtual time with --ui: start running instead of paused");
   app.add_option("--ui-speed", a->ui_speed, "virtual time with --ui: × wall clock while running (0 = as fast as possible; default 1)")
       ->check(CLI::Range(0.0, 1000.0));
+  app.add_flag("--strict", a->strict, "EDS nodes: reject the CiA 306 deviations that are otherwise loaded with a warning");
   return [a] { return run(*a); };
 }
 

@@ -180,9 +180,10 @@ std::string minimal_with_2001(const std::string& body) {
   return t + "\n" + body;
 }
 
+// Strict: the deviations that are otherwise loaded with a warning are errors too.
 void expect_error(const std::string& text, const std::string& at_line, const std::string& reason) {
   EdsError error;
-  auto od = canopen::parse_eds(text, "bad.eds", error);
+  auto od = canopen::parse_eds(text, "bad.eds", error, nullptr, nullptr, canopen::EdsStrictness::Strict);
   EXPECT_FALSE(od.has_value());
   const int line = line_of(text, at_line);
   EXPECT_EQ(error.file, "bad.eds");
@@ -660,7 +661,9 @@ TEST(EdsErrors, ObjectListedTwice) {
 
 TEST(EdsErrors, ObjectListEntriesAndCount) {
   expect_error(with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "SupportedObjects=2\n1=0x2000\n"), "SupportedObjects=2",
-               "entry 2 missing in [ManufacturerObjects] (SupportedObjects=2)");
+               "SupportedObjects=2 but [ManufacturerObjects] lists 1 entry");  // strict; a warning otherwise
+  expect_error(with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "SupportedObjects=2\n2=0x2000\n"), "SupportedObjects=2",
+               "entry 1 missing in [ManufacturerObjects] (SupportedObjects=2)");  // a gap is always an error
   expect_error(with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "SupportedObjects=1\n1=0x2000\n3=0x2001\n"), "3=0x2001",
                "entry 3 beyond SupportedObjects=1");
   expect_error(with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "1=0x2000\n"), "[ManufacturerObjects]",
@@ -683,7 +686,9 @@ TEST(EdsErrors, CompactFormMisuse) {
   EdsError ok;
   EXPECT_TRUE(canopen::parse_eds(minimal_with_2001(array), "ok.eds", ok)) << ok.message();
   expect_error(minimal_with_2001(with(array, "ObjectType=0x8", "ObjectType=0x9")), "CompactSubObj=2",
-               "CompactSubObj is only allowed for ARRAY objects");
+               "CompactSubObj is only allowed for ARRAY objects, and [2001] is a RECORD");  // strict
+  expect_error(minimal_with_2001(with(array, "ObjectType=0x8", "ObjectType=0x7")), "CompactSubObj=2",
+               "CompactSubObj is not allowed for a VAR object");
   expect_error(minimal_with_2001(array + "SubNumber=3\n"), "SubNumber=3", "both SubNumber and CompactSubObj given in [2001]");
   expect_error(minimal_with_2001(array + "\n[2001sub1]\nParameterName=x\n"), "[2001sub1]",
                "[2001sub1] conflicts with CompactSubObj in [2001]");
@@ -708,7 +713,7 @@ TEST(EdsErrors, TheFirstErrorByLineIsReported) {
   // Two problems; the one nearer the top wins, whatever the order in which they are found.
   auto text = with(kMinimal, "DefaultValue=7\n", "DefaultValue=300\n");
   text = with(text, "SupportedObjects=3\n", "SupportedObjects=4\n");
-  expect_error(text, "SupportedObjects=4", "entry 4 missing in [MandatoryObjects] (SupportedObjects=4)");
+  expect_error(text, "SupportedObjects=4", "SupportedObjects=4 but [MandatoryObjects] lists 3 entries");
   const auto all = canopen::check_eds(text, "bad.eds");
   ASSERT_EQ(all.size(), 2u);
   EXPECT_LT(all[0].line, all[1].line);
@@ -961,4 +966,122 @@ DefaultValue=some text
     for (const auto& w : warnings) EXPECT_LE(w.line, lines);
   }
   EXPECT_GT(rejected, 200) << rejected;  // the mutations do break files, and each says where
+}
+
+// ---- deviations that writing tools produce and masters tolerate ------------------------------------
+
+namespace {
+
+struct Quirk {
+  const char* file;
+  const char* line;    ///< the text of the line the finding is reported at
+  const char* reason;  ///< the strict error; the tolerant warning is "reason: reading"
+  const char* reading;
+};
+
+const Quirk kQuirks[] = {
+    {"quirk_compact_record.dcf", "CompactSubObj=8", "CompactSubObj is only allowed for ARRAY objects, and [1600] is a RECORD",
+     "read as 8 sub-indices of the record's DataType, like an ARRAY; sub 0 (number of mapped objects) counts the leading "
+     "non-zero entries"},
+    {"quirk_supported_objects.eds", "SupportedObjects=4", "SupportedObjects=4 but [OptionalObjects] lists 3 entries",
+     "the 3 entries listed are read"},
+    {"quirk_subnumber.eds", "SubNumber=4", "SubNumber=4 but [1400] has 3 sub-index sections", "the 3 sections given are read"},
+    {"quirk_no_1000.eds", "[MandatoryObjects]", "mandatory object 0x1000 missing (CiA 306: 0x1000, 0x1001, 0x1018)",
+     "0x1000 is UNSIGNED32, ro, 0x00000000 (no device profile)"},
+    {"quirk_record_no_sub0.eds", "[1018]", "missing [1018sub0] (highest sub-index supported)",
+     "sub 0 is UNSIGNED8, ro, 1 (the highest sub-index given)"},
+    {"quirk_wo_low_limit.eds", "[2000]", "no DefaultValue, and 0 is below LowLimit 1", "the entry starts at LowLimit 1"},
+};
+
+}  // namespace
+
+TEST(EdsQuirks, TheBaseFixtureIsClean) {
+  EXPECT_TRUE(canopen::check_eds_file(kDataDir + "quirk_none.eds").empty());
+  load_fixture("quirk_none.eds");
+}
+
+TEST(EdsQuirks, EachLoadsWithOneWarningAndStrictRejectsIt) {
+  for (const auto& q : kQuirks) {
+    SCOPED_TRACE(q.file);
+    const std::string path = kDataDir + q.file;
+    const int line = line_of(read_file(path), q.line);
+    const std::string at = path + ":" + std::to_string(line) + ": ";
+    EdsError error;
+    std::vector<EdsError> warnings;
+    const auto od = canopen::load_eds(path, error, nullptr, &warnings);
+    ASSERT_TRUE(od.has_value()) << error.message();
+    ASSERT_EQ(warnings.size(), 1u) << (warnings.empty() ? "" : warnings[0].message());
+    EXPECT_EQ(warnings[0].message(), at + "warning: " + q.reason + ": " + q.reading);
+
+    EXPECT_FALSE(canopen::load_eds(path, error, nullptr, nullptr, canopen::EdsStrictness::Strict));
+    EXPECT_EQ(error.message(), at + q.reason);
+    const auto checked = canopen::check_eds_file(path);  // `vplant eds --check` is strict
+    ASSERT_EQ(checked.size(), 1u);
+    EXPECT_EQ(checked[0].message(), at + q.reason);
+  }
+}
+
+TEST(EdsQuirks, TheInterpretationsAreTheDocumentedOnes) {
+  EdsError error;
+  const auto compact = canopen::load_eds(kDataDir + "quirk_compact_record.dcf", error);
+  ASSERT_TRUE(compact) << error.message();
+  EXPECT_EQ(compact->object(0x1600)->code, ObjectCode::Record);
+  EXPECT_EQ(compact->get<std::uint8_t>(0x1600, 0), 1);  // one object mapped (from [1600Value])
+  EXPECT_EQ(compact->entry(0x1600, 0)->access, Access::ReadWrite);  // masters write it
+  EXPECT_EQ(compact->get<std::uint32_t>(0x1600, 1), 0x20000010u);
+  EXPECT_EQ(compact->get<std::uint32_t>(0x1600, 2), 0u);
+  ASSERT_NE(compact->entry(0x1600, 8), nullptr);  // CompactSubObj=8 sub-indices
+  EXPECT_EQ(compact->entry(0x1600, 8)->type, DataType::Unsigned32);
+
+  const auto no_1000 = canopen::load_eds(kDataDir + "quirk_no_1000.eds", error);
+  ASSERT_TRUE(no_1000) << error.message();
+  ASSERT_NE(no_1000->entry(0x1000, 0), nullptr);
+  EXPECT_EQ(no_1000->entry(0x1000, 0)->access, Access::ReadOnly);
+  EXPECT_EQ(no_1000->get<std::uint32_t>(0x1000, 0), 0u);
+
+  const auto no_sub0 = canopen::load_eds(kDataDir + "quirk_record_no_sub0.eds", error);
+  ASSERT_TRUE(no_sub0) << error.message();
+  EXPECT_EQ(no_sub0->get<std::uint8_t>(0x1018, 0), 1);
+  EXPECT_EQ(no_sub0->entry(0x1018, 0)->type, DataType::Unsigned8);
+
+  const auto wo = canopen::load_eds(kDataDir + "quirk_wo_low_limit.eds", error);
+  ASSERT_TRUE(wo) << error.message();
+  EXPECT_EQ(wo->get<std::uint16_t>(0x2000, 0), 1);
+  EXPECT_EQ(wo->entry(0x2000, 0)->default_value, ObjectDictionary::encode(DataType::Unsigned16, 1));
+
+  const auto subnumber = canopen::load_eds(kDataDir + "quirk_subnumber.eds", error);
+  ASSERT_TRUE(subnumber) << error.message();
+  EXPECT_EQ(subnumber->object(0x1400)->entries.size(), 3u);
+}
+
+TEST(EdsErrors, CobIdAbove7FFWithoutThe29BitFlagMatchesNoFrame) {
+  for (const auto& [file, reason] :
+       {std::pair{"cob_id_29_bit_without_flag.eds",
+                  "0x1400 sub 1: COB-ID 0x1FFFFFFF has CAN-ID bits above 0x7FF without bit 29 (29-bit CAN-ID) set"},
+        std::pair{"cob_id_node_id_overflow.eds", "0x1400 sub 1: COB-ID $NODEID+0xFFFFFFFF with node-ID 1 overflows 32 bits"}}) {
+    SCOPED_TRACE(file);
+    const std::string path = kDataDir + file;
+    const std::string text = read_file(path);
+    const int line = line_of(text, text.find("0x1FFFFFFF") != std::string::npos ? "DefaultValue=0x1FFFFFFF"
+                                                                                : "DefaultValue=$NODEID+0xFFFFFFFF");
+    EdsError error;
+    EXPECT_FALSE(canopen::load_eds(path, error));
+    EXPECT_EQ(error.message(), path + ":" + std::to_string(line) + ": " + reason);
+  }
+  // With bit 29 the same CAN-ID is a 29-bit one; a node-relative 11-bit CAN-ID must stay within
+  // 0x7FF for every node-ID; a PDO marked not valid (bit 31) does not use its CAN-ID.
+  const std::string base = read_file(kDataDir + "quirk_none.eds");
+  EdsError error;
+  EXPECT_TRUE(canopen::parse_eds(with(base, "DefaultValue=$NODEID+0x200", "DefaultValue=0x3FFFFFFF"), "ok.eds", error))
+      << error.message();
+  EXPECT_TRUE(canopen::parse_eds(with(base, "DefaultValue=$NODEID+0x200", "DefaultValue=0x9FFFFFFF"), "ok.eds", error))
+      << error.message();
+  expect_error(with(base, "DefaultValue=$NODEID+0x200", "DefaultValue=$NODEID+0x7F0"), "DefaultValue=$NODEID+0x7F0",
+               "0x1400 sub 1: COB-ID $NODEID+0x000007F0 with node-ID 16 has CAN-ID bits above 0x7FF without bit 29 "
+               "(29-bit CAN-ID) set");
+}
+
+TEST(EdsWarnings, AnOutOfRangePdoCountIsReportedOnceAsWritten) {
+  const std::string base = read_file(kDataDir + "quirk_none.eds");
+  expect_warning(with(base, "NrOfRXPDO=1", "NrOfRXPDO=65535"), "NrOfRXPDO=65535", "NrOfRXPDO: 65535 is out of range (0..512)");
 }

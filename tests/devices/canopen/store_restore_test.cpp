@@ -1,9 +1,11 @@
 #include "devices/canopen/store_restore.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -181,4 +183,79 @@ TEST(StoreRestore, RestoreCanBeSilentAndTheHardwareAbortIsConfigurable) {
   EXPECT_EQ(h.take(), Frames{Frame(0x585, {0x60, 0x11, 0x10, 0x01, 0, 0, 0, 0})});
   h.node().store().set_failing(true);
   EXPECT_EQ(h.write(0x1010, 1, kSave, 4), 0x06000006u);
+}
+
+// Values in the store file go through the checks of an SDO download: each one refused is
+// reported as file:line and the entry keeps its default; the valid ones load.
+TEST(StoreRestore, StoredValuesAreCheckedLikeAnSdoWrite) {
+  const vtest::TempPath path("vplant-store-values");
+  {
+    std::ofstream f(path.str());
+    f << "# vplant parameter store v1\n"
+         "1000:00=00000000\n"       // 2: read-only device type
+         "1017:00=F401\n"           // 3: valid, 500 ms
+         "1800:02=$NODEID+FF\n"     // 4: 0xFF + 5 overflows UNSIGNED8
+         "1800:07=01\n"             // 5: no such sub-index
+         "2000:00=FF\n"             // 6: 255, the limit is 200
+         "2005:00=00000000\n"       // 7: constant
+         "2006:00=0102\n"           // 8: 2 bytes for an UNSIGNED64
+         "3000:00=01\n";            // 9: no such object
+  }
+  canopen::NodePolicy p;
+  p.store.path = path;
+  auto od = vtest::make_generic_od();
+  od.entry(0x2000, 0)->low_limit = canopen::Bytes{1};
+  od.entry(0x2000, 0)->high_limit = canopen::Bytes{200};
+  vtest::CanopenHarness h(std::move(od), p, 5);
+  h.power_on();
+  const auto& od_now = h.node().od();
+  EXPECT_EQ(od_now.get<std::uint32_t>(0x1000), 0x191u);
+  EXPECT_EQ(od_now.get<int>(0x1017), 500);
+  EXPECT_EQ(od_now.get<int>(0x1800, 2), 255);  // its default
+  EXPECT_EQ(od_now.get<int>(0x2000), 7);
+  EXPECT_EQ(od_now.get<std::uint32_t>(0x2005), 0x01020304u);
+  EXPECT_EQ(od_now.get<std::uint64_t>(0x2006), 0x1122334455667788ull);
+  const std::string& f = path.str();
+  const std::vector<std::string> expected = {
+      f + ":2: 1000h sub 0 is read-only",
+      f + ":4: $NODEID+255 overflows UNSIGNED8 with node-ID 5 (1800h sub 2)",
+      f + ":5: 1800h sub 7: no such sub-index",
+      f + ":6: value 255 of 2000h sub 0 is above its high limit 200",
+      f + ":7: 2005h sub 0 is constant",
+      f + ":8: 2-byte value for 2006h sub 0 (UNSIGNED64, 8 bytes)",
+      f + ":9: 3000h sub 0: no such object",
+  };
+  auto rejected = h.node().store().rejected();  // in load order: application area first
+  std::sort(rejected.begin(), rejected.end());
+  EXPECT_EQ(rejected, expected);
+  // An NMT reset loads the store again but reports nothing twice.
+  h.nmt(0x81, 5);
+  h.run_ticks(1);
+  EXPECT_EQ(h.node().store().rejected().size(), expected.size());
+  EXPECT_EQ(h.node().od().get<int>(0x1017), 500);
+}
+
+TEST(ParameterStore, AMalformedLineIsPrintedEscaped) {
+  const vtest::TempPath path("vplant-store-escape");
+  std::ofstream(path.str()) << "# vplant parameter store v1\n2000:00=\x1b[2J\x07\xff\n";
+  canopen::ParameterStore store(path);
+  std::string error;
+  ASSERT_FALSE(store.load(error));
+  EXPECT_EQ(error, path.str() + ":2: malformed value '\\x1B[2J\\x07\\xFF' (expected pairs of hex digits)");
+}
+
+TEST(ParameterStore, OnlyARegularFileIsReadAndNeverBlocks) {
+  const vtest::TempPath dir("vplant-store-dir");
+  ASSERT_EQ(::mkdir(dir.c_str(), 0700), 0);
+  std::string error;
+  EXPECT_FALSE(canopen::ParameterStore(dir).load(error));
+  EXPECT_EQ(error, dir.str() + ": not a regular file (a directory)");
+
+  const std::string fifo = dir.str() + "/fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);  // no writer: a blocking open() would never return
+  EXPECT_FALSE(canopen::ParameterStore(fifo).load(error));
+  EXPECT_EQ(error, fifo + ": not a regular file (a FIFO)");
+
+  EXPECT_FALSE(canopen::ParameterStore("/dev/zero").load(error));
+  EXPECT_EQ(error, "/dev/zero: not a regular file (a character device)");
 }

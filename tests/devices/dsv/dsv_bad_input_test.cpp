@@ -164,4 +164,13 @@ TEST_F(DsvTest, RandomFramesNeverCrashAndTheNodeKeepsAnswering) {
   EXPECT_EQ(sdo({0x40, 0x00, 0x10, 0x00}), Frames{resp({0x43, 0x00, 0x10, 0x00, 0x98, 0x01, 0x00, 0x00})});
 }
 
+// CiA 301 gives 0x06010002 for a write to a read-only object; the DSV manual's list of abort
+// codes (§4.3.3) has only 0x06010000 (docs/devices/dsv.md, "Writing a read-only object").
+TEST_F(DsvTest, WritingTheDeviceTypeAborts06010000) {
+  const auto device_type = read(0x1000, 0);
+  EXPECT_EQ(write(0x1000, 0, 0, 4), 0x06010000u);
+  EXPECT_EQ(write(0x1001, 0, 0, 1), 0x06010000u);
+  EXPECT_EQ(read(0x1000, 0), device_type);
+}
+
 }  // namespace dsvtest

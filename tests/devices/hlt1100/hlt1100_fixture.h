@@ -12,6 +12,7 @@
 #include "devices/canopen/lss_slave.h"
 #include "devices/hlt1100/hlt1100_device.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
+#include "tests/support/temp_path.h"
 #include "tests/support/canopen_harness.h"
 
 namespace hlt1100::test {
@@ -43,10 +44,6 @@ class Hlt1100Test : public ::testing::Test {
       h().power_on();
       h().take();
     }
-  }
-  ~Hlt1100Test() override {
-    std::remove(store_path_.c_str());
-    std::remove((store_path_ + ".tmp").c_str());
   }
 
   vtest::CanopenHarness& h() { return *h_; }
@@ -82,8 +79,7 @@ class Hlt1100Test : public ::testing::Test {
   }
   static Frame emcy(std::initializer_list<std::uint8_t> bytes) { return Frame(0x85, eight(bytes)); }
 
-  std::string store_path_ = "/tmp/vplant-hlt1100-test-" + std::to_string(::getpid()) + "-" +
-                            ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  vtest::TempPath store_path_{"vplant-hlt1100-test"};  // removed with the fixture
   std::unique_ptr<Device> device_;
   std::unique_ptr<vtest::CanopenHarness> h_;
 };

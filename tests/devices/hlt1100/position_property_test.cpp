@@ -38,7 +38,8 @@ TEST_P(PositionProperty, OutputEqualsTheFormula) {
   o.settings = {{"measuring_length_mm", std::to_string(length_mm)},
                 {"manufacturer_offset", std::to_string(m.man_offset)},
                 {"save_delay_ms", "20"}};
-  o.store_path = "/tmp/vplant-hlt1100-property-" + std::to_string(::getpid()) + "-" + std::to_string(GetParam());
+  const vtest::TempPath store("vplant-hlt1100-property");  // removed also when an assertion fails
+  o.store_path = store;
   std::string error;
   auto device = Device::make(o, error);
   ASSERT_TRUE(device) << error;
@@ -90,7 +91,6 @@ TEST_P(PositionProperty, OutputEqualsTheFormula) {
     ASSERT_EQ(static_cast<std::int32_t>(static_cast<std::uint32_t>(*got)), m.position(x))
         << "seed " << GetParam() << " step " << step << " x=" << x << " mm, actions" << trace;
   }
-  std::remove(o.store_path.c_str());
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, PositionProperty, ::testing::Range(1, 21));

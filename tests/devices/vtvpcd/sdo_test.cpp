@@ -233,3 +233,12 @@ TEST(VtvpcdSdo, EveryAbortIsFromTheManualTableAndNothingCrashes) {
     EXPECT_GT(replies, 6000);
   }
 }
+
+// CiA 301 gives 0x06010002 for a write to a read-only object; the manual's abort table has only
+// "only reading or writing possible" = 0x06010000 (docs/devices/vtvpcd.md).
+TEST(VtvpcdSdo, WritingTheDeviceTypeAborts06010000) {
+  vtest::Vtvpcd n;
+  const auto device_type = n->read_u(0x1000, 0);
+  EXPECT_EQ(n->write(0x1000, 0, 0, 4), 0x06010000u);
+  EXPECT_EQ(n->read_u(0x1000, 0), device_type);
+}

@@ -64,7 +64,8 @@ TEST_P(WdgaPositionProperty, OutputEqualsTheFormula) {
   const bool multiturn = GetParam() % 3 != 0;
   devices::DeviceOptions o;
   o.variant = multiturn ? "multiturn" : "singleturn";
-  o.store_path = "/tmp/vplant-wdga-property-" + std::to_string(::getpid()) + "-" + std::to_string(GetParam());
+  const vtest::TempPath store("vplant-wdga-property");  // removed also when an assertion fails
+  o.store_path = store;
   std::string error;
   auto device = Device::make(o, error);
   ASSERT_TRUE(device) << error;
@@ -156,7 +157,6 @@ TEST_P(WdgaPositionProperty, OutputEqualsTheFormula) {
     ASSERT_EQ(*p64, want) << "seed " << GetParam() << " step " << step << " actions" << trace;
     ASSERT_EQ(*p32, want & 0xFFFFFFFFu) << "seed " << GetParam() << " step " << step;
   }
-  std::remove(o.store_path.c_str());
 }
 
 INSTANTIATE_TEST_SUITE_P(Seeds, WdgaPositionProperty, ::testing::Range(1, 31));

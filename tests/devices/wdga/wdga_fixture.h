@@ -15,6 +15,7 @@
 #include "devices/canopen/lss_slave.h"
 #include "devices/wdga/wdga_device.h"
 #include "devices/wdga/wdga_object_dictionary.h"
+#include "tests/support/temp_path.h"
 #include "tests/support/canopen_harness.h"
 
 namespace wdga::test {
@@ -42,10 +43,6 @@ class WdgaTest : public ::testing::Test {
     EXPECT_TRUE(device_) << error;
     h_ = std::make_unique<vtest::CanopenHarness>(device_->node());
     if (boot_now) boot();
-  }
-  ~WdgaTest() override {
-    std::remove(store_path_.c_str());
-    std::remove((store_path_ + ".tmp").c_str());
   }
 
   /// Power-on, bit-rate detection by one SYNC (as in the manual's quick start), boot-up taken.
@@ -86,8 +83,7 @@ class WdgaTest : public ::testing::Test {
   Frame emcy(std::initializer_list<std::uint8_t> bytes) { return Frame(0x80u + id(), eight(bytes)); }
   Frame resp(std::initializer_list<std::uint8_t> bytes) { return Frame(0x580u + id(), eight(bytes)); }
 
-  std::string store_path_ = "/tmp/vplant-wdga-test-" + std::to_string(::getpid()) + "-" +
-                            ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  vtest::TempPath store_path_{"vplant-wdga-test"};  // removed with the fixture
   std::unique_ptr<Device> device_;
   std::unique_ptr<vtest::CanopenHarness> h_;
 };
