@@ -472,7 +472,13 @@ struct ControlPlane::Server {
     need_run();
     auto future = cp.bridge_.sdo(i, upload, index, sub, std::move(data));
     if (future.wait_for(kSdoWait) != std::future_status::ready) throw HttpError{504, "the SDO transfer did not end in time"};
-    reply(res, 200, sdo_result(future.get(), entry, upload));
+    SdoOutcome outcome;
+    try {
+      outcome = future.get();
+    } catch (const std::future_error&) {  // the run ended before the command ran
+      throw HttpError{503, "the run has ended"};
+    }
+    reply(res, 200, sdo_result(outcome, entry, upload));
   }
 
   void sdo_write(const httplib::Request& req, httplib::Response& res) {

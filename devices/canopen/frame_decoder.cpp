@@ -207,7 +207,7 @@ void decode_pdo(const sim::CanFrame& f, const DecoderContext::PdoInfo* info, con
   bool first = true;
   for (const auto& e : info->entries) {
     if (bit + e.bits > f.dlc * 8) {
-      s += ", (frame too short)";
+      s += first ? ": (frame too short)" : ", (frame too short)";
       break;
     }
     std::uint64_t raw = 0;
@@ -408,12 +408,12 @@ DecodedFrame decode_frame(const sim::CanFrame& f, const DecoderContext& ctx) {
     }
     case 0x180: case 0x280: case 0x380: case 0x480:
       d.service = Service::Tpdo;
-      d.pdo = static_cast<int>((fn - 0x100) >> 8);
+      d.pdo = static_cast<int>((fn - 0x180) >> 8) + 1;
       decode_pdo(f, nullptr, ctx, d);
       return d;
     case 0x200: case 0x300: case 0x400: case 0x500:
       d.service = Service::Rpdo;
-      d.pdo = static_cast<int>((fn - 0x100) >> 8);
+      d.pdo = static_cast<int>((fn - 0x200) >> 8) + 1;
       decode_pdo(f, nullptr, ctx, d);
       return d;
     case 0x580:

@@ -1,0 +1,155 @@
+// Benchmark: what the live control plane costs the simulation. The reference plant (SYNC 1 ms,
+// its script) three ways: UI off, UI on without clients, UI on with one in-process client
+// streaming everything (frames, nodes, four signals at 50 Hz). Virtual time: simulated seconds per
+// CPU second of the scheduler's thread and of the whole process (the server threads included),
+// and per wall second. Real time (no script, the plant idling after boot): tick lateness.
+//   ui_bench [--duration S] [--realtime S]     (defaults: 10 s virtual, 3 s real time)
+#include <httplib.h>
+#include <time.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "control/control_plane.h"
+#include "engine/runner.h"
+#include "engine/scenario_loader.h"
+
+namespace {
+
+enum class Mode { Off, On, Streaming };
+const char* name(Mode m) { return m == Mode::Off ? "UI off" : m == Mode::On ? "UI on, no client" : "UI on, 1 client streaming"; }
+
+double cpu_seconds(clockid_t id) {
+  timespec ts{};
+  ::clock_gettime(id, &ts);
+  return static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec) * 1e-9;
+}
+
+struct Result {
+  double simulated = 0, wall = 0, thread_cpu = 0, process_cpu = 0;
+  scenario::RunSummary summary;
+  std::uint64_t stream_bytes = 0, frame_events = 0;
+};
+
+Result run(const scenario::Scenario& s, Mode mode, bool realtime, double duration) {
+  Result r;
+  scenario::RunOptions o;
+  o.quiet = true;
+  o.realtime = realtime;
+  o.duration = sim::from_seconds(duration);
+  std::FILE* sink = std::tmpfile();
+  o.out = sink;
+  std::unique_ptr<control::ControlPlane> ui;
+  if (mode != Mode::Off) {
+    control::UiOptions u;
+    u.port = 0;
+    u.out = nullptr;
+    // Streaming: paused until the client's stream is open (capture runs only while one listens).
+    u.clock.start_paused = mode == Mode::Streaming;
+    u.clock.speed = 0;
+    ui = std::make_unique<control::ControlPlane>(u);
+    if (auto err = ui->bind(); !err.empty()) {
+      std::fprintf(stderr, "ui_bench: %s\n", err.c_str());
+      std::exit(2);
+    }
+    o.extension = ui.get();
+  }
+  scenario::Runner runner(s, scenario::default_environment(), o);
+  std::atomic<bool> done{false};
+  // With a control plane a virtual run pauses at its end instead of ending: stop it there.
+  std::thread stopper([&] {
+    if (!ui) return;
+    while (!done) {
+      if (ui->bridge().attached() && ui->bridge().clock().end_reached) {
+        runner.request_stop();
+        return;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+  });
+  std::atomic<bool> resumed{false};
+  std::chrono::steady_clock::time_point resumed_at;
+  std::thread client([&] {
+    if (mode != Mode::Streaming) return;
+    while (!ui->bridge().attached() && !done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    httplib::Client c("127.0.0.1", ui->port());
+    c.set_read_timeout(5, 0);
+    c.Get("/api/events?signals=cyl.position,pump.swivel_angle,p_supply.pressure,shaft.speed&rate=50",
+          [&](const char* data, std::size_t n) {
+            if (!resumed.exchange(true)) {
+              resumed_at = std::chrono::steady_clock::now();
+              ui->bridge().resume(0.0);
+            }
+            r.stream_bytes += n;
+            for (const char* p = data; (p = static_cast<const char*>(std::memchr(p, 'e', static_cast<std::size_t>(data + n - p)))); ++p)
+              if (static_cast<std::size_t>(data + n - p) >= 13 && !std::strncmp(p, "event: frames", 13)) ++r.frame_events;
+            return !done.load();
+          });
+  });
+  const auto w0 = std::chrono::steady_clock::now();
+  const double p0 = cpu_seconds(CLOCK_PROCESS_CPUTIME_ID), t0 = cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
+  runner.run();
+  r.thread_cpu = cpu_seconds(CLOCK_THREAD_CPUTIME_ID) - t0;
+  r.process_cpu = cpu_seconds(CLOCK_PROCESS_CPUTIME_ID) - p0;
+  const auto w1 = std::chrono::steady_clock::now();
+  // The client takes what the hub still has for it (not measured: the run is over).
+  if (mode == Mode::Streaming) std::this_thread::sleep_for(std::chrono::seconds(1));
+  done = true;
+  stopper.join();
+  client.join();
+  r.wall = std::chrono::duration<double>(w1 - (resumed ? resumed_at : w0)).count();
+  r.summary = runner.summary();
+  r.simulated = r.summary.simulated_s;
+  std::fclose(sink);
+  return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
+  double duration = 10, rt_duration = 3;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--duration") && i + 1 < argc) duration = std::atof(argv[++i]);
+    else if (!std::strcmp(argv[i], "--realtime") && i + 1 < argc) rt_duration = std::atof(argv[++i]);
+  }
+  const std::string path = VPLANT_SOURCE_DIR "/scenarios/reference-plant.yaml";
+  std::ifstream in(path);
+  std::stringstream buf;
+  buf << in.rdbuf();
+  std::string text = buf.str();
+  for (auto p = text.find("sync: 10ms"); p != std::string::npos; p = text.find("sync: 10ms")) text.replace(p, 10, "sync: 1ms");
+  scenario::Scenario s;
+  try {
+    s = scenario::parse_scenario(text, path, path.substr(0, path.rfind('/')));
+  } catch (const scenario::LoadError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+  s.outputs = {};
+  std::printf("ui_bench: reference plant, SYNC 1 ms, %.0f s virtual time (CPU per thread / process via clock_gettime)\n", duration);
+  for (const Mode m : {Mode::Off, Mode::On, Mode::Streaming}) {
+    const auto r = run(s, m, false, duration);
+    std::printf("  %-26s %6.0fx per scheduler-thread CPU s, %6.0fx per process CPU s, %6.0fx per wall s", name(m),
+                r.simulated / r.thread_cpu, r.simulated / r.process_cpu, r.simulated / r.wall);
+    if (m == Mode::Streaming)
+      std::printf(" (%llu frame batches, %llu bytes streamed)", static_cast<unsigned long long>(r.frame_events), static_cast<unsigned long long>(r.stream_bytes));
+    std::printf("\n");
+  }
+  scenario::Scenario idle = s;
+  idle.script.clear();
+  std::printf("ui_bench: reference plant without script, %.0f s real time\n", rt_duration);
+  for (const Mode m : {Mode::Off, Mode::On, Mode::Streaming}) {
+    const auto r = run(idle, m, true, rt_duration);
+    std::printf("  %-26s ticks %llu, overruns %llu, worst tick lateness %lld us, scheduler thread CPU %.1f %%\n", name(m),
+                static_cast<unsigned long long>(r.summary.ticks), static_cast<unsigned long long>(r.summary.overruns),
+                static_cast<long long>(r.summary.max_lateness_us), 100.0 * r.thread_cpu / r.wall);
+  }
+  return 0;
+}
