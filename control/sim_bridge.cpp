@@ -177,6 +177,12 @@ bool SimBridge::before_tick(bool end_reached) {
       pace();
       break;
     }
+    // On a bit-timed bus a request and its answer take wire time: a paused clock still runs the
+    // ticks an SDO transfer needs (bounded by the client's virtual-time timeout).
+    if (sdo_in_flight()) {
+      pace();
+      break;
+    }
     anchor_valid_ = false;
     wait_for_work(std::chrono::steady_clock::now() + std::chrono::milliseconds(20));
     service();
@@ -279,6 +285,12 @@ std::future<SdoOutcome> SimBridge::sdo(std::size_t node, bool upload, std::uint1
   });
   if (!queued) promise->set_value({SdoOutcome::Kind::Failed, {}, 0, "the run has ended"});
   return future;
+}
+
+bool SimBridge::sdo_in_flight() const {
+  for (const auto& job : sdo_jobs_)
+    if (job) return true;
+  return false;
 }
 
 void SimBridge::finish_sdo_jobs() {

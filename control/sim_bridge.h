@@ -142,6 +142,7 @@ class SimBridge final : public scenario::RunExtension {
   void refresh_pdo_maps();
   void sample_signals();
   void finish_sdo_jobs();
+  bool sdo_in_flight() const;
   void pace();
   void wait_for_work(std::chrono::steady_clock::time_point until);
   void record_emcy(std::size_t bus, const sim::CanFrame& f, sim::Time now);

@@ -20,9 +20,10 @@ using namespace std::chrono_literals;
 
 namespace {
 
+// The zero-time bus: a request and its answer share the tick (the bit-timed default is tested below).
 const std::string kSensor = R"(name: sensor
 buses:
-  - {name: main, transport: virtual}
+  - {name: main, transport: virtual, timing: ideal}
 nodes:
   - {name: hlt, device: hlt1100, node_id: 5}
 )";
@@ -55,6 +56,26 @@ TEST(Simulation, LoadErrorsCarryFileLineAndColumn) {
   EXPECT_NE(e.reason().find("no_such_product"), std::string::npos) << e.reason();
 
   EXPECT_THROW(vplant::Simulation::load_file("/nonexistent/scenario.yaml"), vplant::Error);
+}
+
+TEST(Simulation, OnTheBitTimedBusTheAnswerTakesWireTime) {
+  auto sim = vplant::Simulation::load_string(R"(name: sensor
+buses:
+  - {name: main, bitrate: 125000}
+nodes:
+  - {name: hlt, device: hlt1100, node_id: 5}
+)");
+  std::vector<vplant::TimedFrame> seen;
+  auto& bus = sim.attach("main", [&](const vplant::Frame& f, vplant::Time t) { seen.push_back({t, "", f}); });
+  sim.run_for(5ms);
+  seen.clear();
+  const auto asked = sim.now();
+  bus.send(vplant::Frame::make(0x605, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}));
+  sim.run_for(3ms);
+  ASSERT_EQ(seen.size(), 1u);
+  EXPECT_EQ(seen[0].frame.id, 0x585u);
+  // Two 8-byte frames at 125 kbit/s: at least 2 × 111 bits = 1.776 ms after the request.
+  EXPECT_GE(seen[0].time - asked, std::chrono::microseconds(1776));
 }
 
 TEST(Simulation, RefusesSocketCanBusesAndRealTime) {

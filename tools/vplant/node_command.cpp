@@ -75,7 +75,10 @@ int run_node_with_ui(const NodeOptions& o, const std::map<std::string, std::stri
   s.file = "vplant node";
   s.dir = ".";
   s.name = o.eds.empty() ? o.device : o.eds;
-  s.buses.push_back(scenario::BusSpec{"main", o.can, 500000, {}});
+  scenario::BusSpec bus;
+  bus.name = "main";
+  bus.iface = o.can;
+  s.buses.push_back(bus);
   scenario::NodeSpec n;
   n.name = o.eds.empty() ? o.device : "node";
   n.device = o.eds.empty() ? o.device : "eds";
