@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "devices/dsv/dsv.h"
 #include "tests/support/canopen_harness.h"
@@ -25,7 +26,12 @@ inline std::map<std::string, std::string> bus_mode(std::map<std::string, std::st
   return s;
 }
 
-inline std::string temp_store(const std::string& name) { return vtest::unique_temp_path("dsv_" + name, ".store"); }
+/// A store file removed when the test program exits (ctest runs each case as its own process).
+inline std::string temp_store(const std::string& name) {
+  static std::vector<std::unique_ptr<vtest::TempPath>> paths;
+  paths.push_back(std::make_unique<vtest::TempPath>("dsv_" + name, ".store"));
+  return paths.back()->str();
+}
 
 class DsvTest : public ::testing::Test {
  protected:

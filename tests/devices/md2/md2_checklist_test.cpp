@@ -1,6 +1,8 @@
 // The MD2 digest's "Emulator test checklist" (§8), item by item, frame level. Node 1, 20 kbit/s,
 // amplifier, delivery state (0x6043 = 1) unless the item says otherwise.
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include "tests/devices/md2/md2_fixture.h"
 #include "tests/support/temp_path.h"
@@ -8,7 +10,12 @@
 namespace md2test {
 
 namespace {
-std::string temp_store(const char* name) { return vtest::unique_temp_path(std::string("md2_") + name, ".store"); }
+// Removed when the test program exits (ctest runs each case as its own process).
+std::string temp_store(const char* name) {
+  static std::vector<std::unique_ptr<vtest::TempPath>> paths;
+  paths.push_back(std::make_unique<vtest::TempPath>(std::string("md2_") + name, ".store"));
+  return paths.back()->str();
+}
 }  // namespace
 
 TEST_F(Md2Test, C01_PowerOnSendsOneBootUpThenSilence) {

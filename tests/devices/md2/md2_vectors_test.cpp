@@ -370,7 +370,7 @@ TEST_F(Md2Test, B15_RampRunningBit) {
 }
 
 TEST_F(Md2Test, B16_RestoreAllThenResetCommunication) {
-  const std::string path = vtest::unique_temp_path("md2_b16", ".store");
+  const vtest::TempPath path("md2_b16", ".store");
   make({}, "", 0, path);
   ASSERT_EQ(write(0x1017, 0, 500, 2), 0u);
   ASSERT_EQ(write(0x1010, 1, 0x65766173, 4), 0u);
