@@ -94,6 +94,7 @@ void SimBridge::attach(const scenario::RunContext& context) {
   paused_ = !realtime_ && options_.start_paused;
   speed_ = options_.speed;
   now_us_ = ctx_->scheduler.now().time_since_epoch().count();
+  tick_us_ = ctx_->scheduler.tick().count();
 
   for (std::size_t b = 0; b < world.buses().size(); ++b) {
     auto& bus = *world.buses()[b];
@@ -232,7 +233,7 @@ ClockState SimBridge::clock() const {
   ClockState c;
   c.realtime = realtime_;
   c.t_us = now_us_.load(std::memory_order_relaxed);
-  c.tick_us = ctx_ ? ctx_->scheduler.tick().count() : 1000;
+  c.tick_us = tick_us_.load(std::memory_order_relaxed);
   c.run_ticks_left = budget_.load();
   c.paused = paused_.load() && c.run_ticks_left == 0;
   c.speed = speed_.load();

@@ -149,6 +149,8 @@ class SimBridge final : public scenario::RunExtension {
 
   ClockOptions options_;
   std::unique_ptr<scenario::RunContext> ctx_;
+  // Read by server threads (clock()): a copy, since the scheduler dies with the run.
+  std::atomic<std::int64_t> tick_us_{1000};
   bool realtime_ = false;
   std::atomic<bool> attached_{false}, finished_{false};
 
