@@ -15,6 +15,7 @@
 #include "engine/runner.h"
 #include "engine/scenario_loader.h"
 #include "tests/support/temp_path.h"
+#include "tests/support/read_file.h"
 
 using namespace std::chrono_literals;
 
@@ -28,12 +29,7 @@ nodes:
   - {name: hlt, device: hlt1100, node_id: 5}
 )";
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using vtest::read_file;
 
 vplant::Error load_error(const std::string& yaml) {
   try {

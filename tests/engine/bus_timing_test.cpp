@@ -7,18 +7,14 @@
 
 #include "tests/engine/run_helper.h"
 #include "tests/support/temp_path.h"
+#include "tests/support/read_file.h"
 
 using vtest::kMachine;
 using vtest::run_text;
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using vtest::read_file;
 
 const std::string kBus125k = "buses:\n  - {name: main, bitrate: 125000}\n";
 

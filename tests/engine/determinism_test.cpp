@@ -7,15 +7,11 @@
 
 #include "tests/support/temp_path.h"
 #include "tests/engine/run_helper.h"
+#include "tests/support/read_file.h"
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using vtest::read_file;
 
 std::uint64_t fnv1a(const std::string& s) {
   std::uint64_t h = 1469598103934665603ull;

@@ -8,15 +8,11 @@
 #include "tests/support/temp_path.h"
 #include "tests/engine/run_helper.h"
 #include "engine/plot.h"
+#include "tests/support/read_file.h"
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using vtest::read_file;
 
 const std::string kRun = R"(
 nodes:

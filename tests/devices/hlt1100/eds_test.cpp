@@ -10,16 +10,12 @@
 #include "devices/hlt1100/hlt1100_device.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
 #include "tests/support/canopen_harness.h"
+#include "tests/support/read_file.h"
 
 namespace hlt1100::test {
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using vtest::read_file;
 
 TEST(Hlt1100Eds, CommittedFileIsTheGeneratedOne) {
   const std::string committed = read_file(std::string(VPLANT_SOURCE_DIR) + "/devices/hlt1100/hlt1100.eds");

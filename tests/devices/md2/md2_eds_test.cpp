@@ -7,14 +7,10 @@
 
 #include "devices/canopen/eds.h"
 #include "devices/md2/md2_product.h"
+#include "tests/support/read_file.h"
 
 namespace {
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using vtest::read_file;
 }  // namespace
 
 TEST(Md2Eds, CommittedFilesEqualTheGeneratedOnes) {

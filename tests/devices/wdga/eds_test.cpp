@@ -8,16 +8,12 @@
 #include "devices/canopen/eds.h"
 #include "devices/wdga/wdga_device.h"
 #include "devices/wdga/wdga_object_dictionary.h"
+#include "tests/support/read_file.h"
 
 namespace wdga::test {
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using vtest::read_file;
 
 class WdgaEds : public ::testing::TestWithParam<std::string> {};
 
