@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <random>
+
 namespace {
 
 using sim::CanFrame;
@@ -12,6 +15,68 @@ CanFrame ext_frame(std::uint32_t id, std::initializer_list<std::uint8_t> bytes) 
   auto f = CanFrame::data_frame(id, bytes);
   f.extended = true;
   return f;
+}
+
+// The straightforward definition frame_bits() must agree with: every bit SOF .. CRC sequence
+// written out one by one, the CRC-15 computed bit by bit, stuff bits counted bit by bit.
+sim::FrameBits reference_frame_bits(const CanFrame& frame) {
+  std::array<std::uint8_t, 1 + 32 + 6 + 64 + 15> bits{};
+  unsigned n = 0;
+  auto put = [&](std::uint32_t value, unsigned width) {
+    for (unsigned i = width; i-- > 0;) bits[n++] = static_cast<std::uint8_t>((value >> i) & 1u);
+  };
+  put(0, 1);  // SOF
+  const unsigned dlc = frame.dlc > 8 ? 8u : frame.dlc;
+  if (!frame.extended) {
+    put(frame.id & 0x7FF, 11);
+    put(frame.rtr ? 1 : 0, 1);  // RTR
+    put(0, 1);                  // IDE
+    put(0, 1);                  // r0
+  } else {
+    put((frame.id >> 18) & 0x7FF, 11);
+    put(1, 1);  // SRR
+    put(1, 1);  // IDE
+    put(frame.id & 0x3FFFF, 18);
+    put(frame.rtr ? 1 : 0, 1);  // RTR
+    put(0, 2);                  // r1, r0
+  }
+  put(dlc, 4);
+  if (!frame.rtr)
+    for (unsigned i = 0; i < dlc; ++i) put(frame.data[i], 8);
+  sim::FrameBits out;
+  std::uint16_t crc = 0;
+  for (unsigned i = 0; i < n; ++i) {
+    const bool next = (bits[i] ^ (crc >> 14)) & 1u;
+    crc = static_cast<std::uint16_t>((crc << 1) & 0x7FFF);
+    if (next) crc ^= 0x4599;
+  }
+  out.crc = crc;
+  put(crc, 15);
+  out.stuffed_region = n;
+  unsigned run = 0;
+  std::uint8_t last = 2;
+  for (unsigned i = 0; i < n; ++i) {
+    if (bits[i] == last) {
+      ++run;
+    } else {
+      last = bits[i];
+      run = 1;
+    }
+    if (run == 5) {  // the stuff bit has the other level and starts the next run
+      ++out.stuff_bits;
+      last = static_cast<std::uint8_t>(last ^ 1u);
+      run = 1;
+    }
+  }
+  return out;
+}
+
+void expect_same_bits(const CanFrame& f) {
+  const auto fast = frame_bits(f);
+  const auto ref = reference_frame_bits(f);
+  ASSERT_EQ(fast.stuffed_region, ref.stuffed_region) << sim::to_candump(f) << " ext " << f.extended;
+  ASSERT_EQ(fast.crc, ref.crc) << sim::to_candump(f) << " ext " << f.extended;
+  ASSERT_EQ(fast.stuff_bits, ref.stuff_bits) << sim::to_candump(f) << " ext " << f.extended;
 }
 
 }  // namespace
@@ -96,4 +161,54 @@ TEST(CanBitTiming, ArbitrationOrder) {
   ext_rtr.rtr = true;
   EXPECT_LT(arbitration_key(ext100), arbitration_key(ext_rtr));
   EXPECT_LT(arbitration_key(ext_rtr), arbitration_key(CanFrame::data_frame(0x101, {})));
+}
+
+// frame_bits() works a byte at a time through tables; it must not drift from the bit-by-bit
+// definition. Random frames, half of them with runs of equal bytes (the stuffing cases), every
+// DLC (above 8 the data field stays 8 bytes), 11- and 29-bit identifiers, data and remote.
+TEST(CanBitTiming, MatchesBitByBitReferenceOnRandomFrames) {
+  std::mt19937 rng(20261125);
+  for (int i = 0; i < 200000; ++i) {
+    CanFrame f;
+    f.extended = (rng() & 1u) != 0;
+    f.id = f.extended ? rng() & CanFrame::kMaxExtId : rng() & CanFrame::kMaxStdId;
+    if (rng() % 8 == 0) f.id = f.extended ? (rng() % 2 ? CanFrame::kMaxExtId : 0) : (rng() % 2 ? CanFrame::kMaxStdId : 0);
+    f.rtr = rng() % 4 == 0;
+    f.dlc = static_cast<std::uint8_t>(rng() % 10 == 0 ? 9 + rng() % 7 : rng() % 9);
+    const bool runs = (rng() & 1u) != 0;
+    for (auto& b : f.data) {
+      const auto r = rng();
+      b = static_cast<std::uint8_t>(runs ? ((r & 3u) == 0 ? r >> 8 : ((r & 4u) ? 0xFF : 0x00)) : r >> 8);
+    }
+    expect_same_bits(f);
+  }
+}
+
+TEST(CanBitTiming, MatchesBitByBitReferenceOnEveryStandardIdentifier) {
+  for (std::uint32_t id = 0; id <= CanFrame::kMaxStdId; ++id) {
+    for (std::uint8_t dlc = 0; dlc <= 8; ++dlc) {
+      auto f = CanFrame::data_frame(id, {});
+      f.dlc = dlc;
+      f.data = {0x00, 0xFF, 0x0F, 0xF0, 0x83, 0x7C, 0x00, 0x00};
+      expect_same_bits(f);
+      f.rtr = true;
+      expect_same_bits(f);
+    }
+  }
+}
+
+TEST(CanBitTiming, Crc15MatchesFrameCrc) {
+  // can_crc15() over the frame's bits gives the CRC frame_bits() reports.
+  const auto f = CanFrame::data_frame(0x181, {1, 2, 3, 4, 5, 6, 7, 8});
+  std::array<std::uint8_t, 19 + 64> bits{};
+  unsigned n = 0;
+  auto put = [&](std::uint32_t value, unsigned width) {
+    for (unsigned i = width; i-- > 0;) bits[n++] = static_cast<std::uint8_t>((value >> i) & 1u);
+  };
+  put(0, 1);
+  put(0x181, 11);
+  put(0, 3);
+  put(8, 4);
+  for (auto b : f.data) put(b, 8);
+  EXPECT_EQ(sim::can_crc15(bits.data(), n), frame_bits(f).crc);
 }
