@@ -1,6 +1,7 @@
 #include "sim/bus.h"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 #include "sim/can_bit_timing.h"
@@ -21,6 +22,16 @@ constexpr unsigned kRecAfterPassiveSuccess = 119;  // "a value between 119 and 1
 
 std::int64_t ns_of(Time t) { return t.time_since_epoch().count() * 1000; }
 Time time_of(std::int64_t ns) { return Time{Duration{ns / 1000}}; }
+
+// CanFrame::operator== inline: the transmit queue's head is checked against every frame sent.
+bool same_frame(const CanFrame& a, const CanFrame& b) {
+  if (a.id != b.id || a.dlc != b.dlc || a.extended != b.extended || a.rtr != b.rtr) return false;
+  if (a.rtr) return true;
+  const unsigned n = a.dlc > 8 ? 8u : a.dlc;
+  for (unsigned i = 0; i < n; ++i)
+    if (a.data[i] != b.data[i]) return false;
+  return true;
+}
 }  // namespace
 
 Bus::Bus(std::string name)
@@ -29,11 +40,13 @@ Bus::Bus(std::string name)
 void Bus::set_timing(BusTiming timing, std::uint32_t bit_rate) {
   timing_ = timing;
   timing_rate_ = bit_rate == 0 ? 500000 : bit_rate;
+  bit_ns_ = 1000000000LL / timing_rate_;
 }
 
 int Bus::attach(FrameReceiver* receiver) {
   endpoints_.emplace_back();
   endpoints_.back().receiver = receiver;
+  tx_pending_.resize((endpoints_.size() + 63) / 64);
   return static_cast<int>(endpoints_.size()) - 1;
 }
 
@@ -41,7 +54,7 @@ void Bus::set_online(int endpoint, bool online) {
   if (endpoint < 0 || endpoint >= static_cast<int>(endpoints_.size())) return;
   auto& ep = endpoints_[static_cast<std::size_t>(endpoint)];
   ep.online = online;
-  if (!online) ep.tx.clear();  // the controller is off: what it had queued is gone
+  if (!online) tx_clear(endpoint);  // the controller is off: what it had queued is gone
 }
 
 bool Bus::online(int endpoint) const {
@@ -82,11 +95,34 @@ void Bus::send(int from_endpoint, const CanFrame& frame, Time now) {
     ++ep->counters.tx_queue_overflow;
     return;
   }
-  ep->tx.push(Queued{p.frame, ns_of(now)});
+  tx_push(from_endpoint, Queued{p.frame, ns_of(now)});
+}
+
+void Bus::tx_push(int from, const Queued& q) {
+  Endpoint* ep = endpoint_of(from);
+  const bool was_empty = ep->tx.empty();
+  ep->tx.push(q);
+  if (!was_empty) return;  // the queue's head, and so the earliest ready head, is unchanged
+  if (from != kWire) tx_pending_[static_cast<std::size_t>(from) >> 6] |= 1ull << (from & 63);
+  ready_floor_ns_ = std::min(ready_floor_ns_, q.ready_ns);
+}
+
+void Bus::tx_pop(int from) {
+  Endpoint* ep = endpoint_of(from);
+  ep->tx.pop();
+  if (!ep->tx.empty()) {
+    ready_floor_ns_ = std::min(ready_floor_ns_, ep->tx.front().ready_ns);
+  } else if (from != kWire) {
+    tx_pending_[static_cast<std::size_t>(from) >> 6] &= ~(1ull << (from & 63));
+  }
+}
+
+void Bus::tx_clear(int index) {
+  endpoints_[static_cast<std::size_t>(index)].tx.clear();
+  tx_pending_[static_cast<std::size_t>(index) >> 6] &= ~(1ull << (index & 63));
 }
 
 void Bus::release_delayed(Time now) {
-  if (delayed_.empty()) return;
   // Release due delayed frames in the order they were delayed (stable for determinism).
   auto due_end = std::stable_partition(delayed_.begin(), delayed_.end(),
                                        [now](const Delayed& d) { return d.due <= now; });
@@ -96,7 +132,7 @@ void Bus::release_delayed(Time now) {
     } else if (it->pending.from == kWire || participates(it->pending.from)) {
       auto* ep = endpoint_of(it->pending.from);
       if (ep->tx.size() < tx_depth_) {
-        ep->tx.push(Queued{it->pending.frame, ns_of(it->due)});
+        tx_push(it->pending.from, Queued{it->pending.frame, ns_of(it->due)});
       } else {
         ++stats_.tx_queue_overflow;
         ++ep->counters.tx_queue_overflow;
@@ -107,8 +143,9 @@ void Bus::release_delayed(Time now) {
 }
 
 std::size_t Bus::deliver(Time now) {
-  now_ns_ = std::max(now_ns_, ns_of(now));
-  release_delayed(now);
+  const std::int64_t now_ns = ns_of(now);
+  now_ns_ = std::max(now_ns_, now_ns);
+  if (!delayed_.empty()) release_delayed(now);
   std::size_t n = 0;
   if (timing_ == BusTiming::Bit) {
     deliver_timed(now, n);
@@ -126,7 +163,7 @@ std::size_t Bus::deliver(Time now) {
       }
     }
   }
-  idle_until(ns_of(now), now);
+  idle_until(now_ns, now);
   if (transport_) transport_->service(now);
   return n;
 }
@@ -180,34 +217,48 @@ void Bus::deliver_timed(Time now, std::size_t& n) {
 }
 
 bool Bus::start_next(std::int64_t now_ns) {
-  std::int64_t earliest = std::numeric_limits<std::int64_t>::max();
-  const int count = static_cast<int>(endpoints_.size());
+  // Nothing can start before now: the common case between frames, decided without the queues.
+  if (std::max(idle_ns_, ready_floor_ns_) >= now_ns) return false;
   auto ready_of = [](const Endpoint& ep) { return std::max(ep.tx.front().ready_ns, ep.suspend_until_ns); };
-  for (int i = -1; i < count; ++i) {
-    if (i >= 0 && !participates(i)) continue;
-    const Endpoint& ep = i < 0 ? wire_ : endpoints_[static_cast<std::size_t>(i)];
-    if (!ep.tx.empty()) earliest = std::min(earliest, ready_of(ep));
+  std::int64_t earliest = std::numeric_limits<std::int64_t>::max();
+  if (!wire_.tx.empty()) earliest = ready_of(wire_);
+  for (std::size_t w = 0; w < tx_pending_.size(); ++w) {
+    for (std::uint64_t bits = tx_pending_[w]; bits != 0; bits &= bits - 1) {
+      const int i = static_cast<int>(w * 64) + std::countr_zero(bits);
+      if (!participates(i)) continue;
+      earliest = std::min(earliest, ready_of(endpoints_[static_cast<std::size_t>(i)]));
+    }
   }
+  ready_floor_ns_ = earliest;
   if (earliest == std::numeric_limits<std::int64_t>::max()) return false;
   const std::int64_t start = std::max(idle_ns_, earliest);
   // Everything sent at `start` must be known before it is decided: only instants before now.
   if (start >= now_ns) return false;
+  // On equal keys the lower endpoint wins (endpoints in increasing order); the wire last.
   int winner = kWire - 1;
   std::uint64_t best = 0;
-  for (int i = 0; i <= count; ++i) {
-    const int index = i < count ? i : kWire;  // on equal keys the lower endpoint wins; the wire last
-    if (index >= 0 && !participates(index)) continue;
-    const Endpoint& ep = index < 0 ? wire_ : endpoints_[static_cast<std::size_t>(index)];
-    if (ep.tx.empty() || ready_of(ep) > start) continue;
-    const std::uint64_t key = arbitration_key(ep.tx.front().frame);
-    if (winner == kWire - 1 || key < best) {
-      winner = index;
-      best = key;
+  for (std::size_t w = 0; w < tx_pending_.size(); ++w) {
+    for (std::uint64_t bits = tx_pending_[w]; bits != 0; bits &= bits - 1) {
+      const int i = static_cast<int>(w * 64) + std::countr_zero(bits);
+      if (!participates(i)) continue;
+      const Endpoint& ep = endpoints_[static_cast<std::size_t>(i)];
+      if (ready_of(ep) > start) continue;
+      const std::uint64_t key = arbitration_key(ep.tx.front().frame);
+      if (winner == kWire - 1 || key < best) {
+        winner = i;
+        best = key;
+      }
     }
+  }
+  if (!wire_.tx.empty() && ready_of(wire_) <= start) {
+    const std::uint64_t key = arbitration_key(wire_.tx.front().frame);
+    if (winner == kWire - 1 || key < best) winner = kWire;
   }
   const Time start_time = time_of(start);
   idle_until(start, start_time);
-  for (auto& ep : endpoints_) ep.recessive_ns = 0;  // the SOF ends every recessive sequence
+  // The SOF ends every recessive sequence (only bus-off endpoints count them).
+  if (bus_off_count_ > 0)
+    for (auto& ep : endpoints_) ep.recessive_ns = 0;
 
   const CanFrame& frame = endpoint_of(winner)->tx.front().frame;
   const FrameBits bits = frame_bits(frame);
@@ -245,11 +296,13 @@ void Bus::complete(Time at) {
     receive_result(f.from, true, at);
   } else {
     // The frame leaves the queue only now: a destroyed one is retransmitted automatically.
-    if (!sender->tx.empty() && sender->tx.front().frame == f.frame) sender->tx.pop();
+    if (!sender->tx.empty() && same_frame(sender->tx.front().frame, f.frame)) tx_pop(f.from);
     ++stats_.frames;
     if (f.from == kWire) ++stats_.from_wire;
-    const std::string_view wire_name = transport_ ? transport_->name() : std::string_view(name_);
-    for (auto* tap : taps_) tap->on_bus_frame(wire_name, f.frame, at);
+    if (!taps_.empty()) {
+      const std::string_view wire_name = transport_ ? transport_->name() : std::string_view(name_);
+      for (auto* tap : taps_) tap->on_bus_frame(wire_name, f.frame, at);
+    }
     if (transport_ && f.from != kWire) transport_->send(f.frame);
     transmit_success(f.from, at);
     receive_result(f.from, false, at);
@@ -276,20 +329,25 @@ void Bus::transmit_error(int from, Time at) {
 void Bus::transmit_success(int from, Time at) {
   if (from == kWire) return;
   auto& c = endpoints_[static_cast<std::size_t>(from)].counters;
-  if (c.tec > 0) --c.tec;
+  if (c.tec == 0) return;  // the state follows the counters: unchanged counters, unchanged state
+  --c.tec;
   update_state(from, at);
 }
 
 void Bus::receive_result(int from, bool error, Time at) {
+  // A success changes nothing while every REC is 0 (the state follows the counters).
+  if (!error && rec_nonzero_count_ == 0) return;
   for (int i = 0; i < static_cast<int>(endpoints_.size()); ++i) {
     if (i == from || !participates(i)) continue;
     auto& c = endpoints_[static_cast<std::size_t>(i)].counters;
     if (error) {
-      ++c.rec;
+      if (c.rec++ == 0) ++rec_nonzero_count_;
     } else if (c.rec >= kPassiveLimit) {
       c.rec = kRecAfterPassiveSuccess;
     } else if (c.rec > 0) {
-      --c.rec;
+      if (--c.rec == 0) --rec_nonzero_count_;
+    } else {
+      continue;  // unchanged counters, unchanged state
     }
     update_state(i, at);
   }
@@ -306,7 +364,8 @@ void Bus::update_state(int index, Time at) {
   c.state = next;
   if (next == ErrorState::BusOff) {
     ++c.bus_off_events;
-    ep.tx.clear();
+    ++bus_off_count_;
+    tx_clear(index);
     ep.recessive_ns = 0;
     ep.recovery_sequences = 0;
   }
@@ -314,6 +373,7 @@ void Bus::update_state(int index, Time at) {
 }
 
 void Bus::recessive_sequences(unsigned count, Time at) {
+  if (bus_off_count_ == 0) return;
   for (int i = 0; i < static_cast<int>(endpoints_.size()); ++i) add_recovery(i, count, at);
 }
 
@@ -323,8 +383,10 @@ void Bus::add_recovery(int index, unsigned sequences, Time at) {
   ep.recovery_sequences += sequences;
   if (ep.recovery_sequences < kRecoverySequences) return;
   ep.counters.tec = 0;
+  if (ep.counters.rec > 0) --rec_nonzero_count_;
   ep.counters.rec = 0;
   ep.counters.state = ErrorState::Active;
+  --bus_off_count_;
   ep.recovery_sequences = 0;
   ep.recessive_ns = 0;
   notify(index, ErrorState::Active, at);
@@ -335,6 +397,10 @@ void Bus::idle_until(std::int64_t until_ns, Time at) {
   const std::int64_t from = std::max(idle_ns_, idle_accounted_ns_);
   if (until_ns <= from) return;
   idle_accounted_ns_ = until_ns;
+  if (bus_off_count_ > 0) count_idle(from, until_ns, at);
+}
+
+void Bus::count_idle(std::int64_t from, std::int64_t until_ns, Time at) {
   const std::int64_t sequence_ns = static_cast<std::int64_t>(kFrameTailBits) * bit_ns();
   for (int i = 0; i < static_cast<int>(endpoints_.size()); ++i) {
     auto& ep = endpoints_[static_cast<std::size_t>(i)];

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -188,6 +189,10 @@ class Bus {
   void deliver_one(const Pending& p, Time now);
   void deliver_timed(Time now, std::size_t& n);
   bool start_next(std::int64_t now_ns);
+  // Transmit queues (Bit timing); they keep tx_pending_ and ready_floor_ns_ up to date.
+  void tx_push(int from, const Queued& q);
+  void tx_pop(int from);
+  void tx_clear(int index);
   void complete(Time now);
   void release_delayed(Time now);
   Endpoint* endpoint_of(int from) { return from == kWire ? &wire_ : &endpoints_[static_cast<std::size_t>(from)]; }
@@ -200,9 +205,10 @@ class Bus {
   void recessive_sequences(unsigned count, Time at);
   void add_recovery(int index, unsigned sequences, Time at);
   void idle_until(std::int64_t until_ns, Time at);
+  void count_idle(std::int64_t from_ns, std::int64_t until_ns, Time at);
   void account(const CanFrame* frame, unsigned bits, std::int64_t start_ns);
   void notify(int index, ErrorState state, Time at);
-  std::int64_t bit_ns() const { return 1000000000LL / timing_rate_; }
+  std::int64_t bit_ns() const { return bit_ns_; }
 
   std::string name_;
   std::vector<Endpoint> endpoints_;
@@ -216,9 +222,18 @@ class Bus {
 
   BusTiming timing_ = BusTiming::Ideal;
   std::uint32_t timing_rate_ = 500000;
+  std::int64_t bit_ns_ = 1000000000LL / 500000;
   std::size_t tx_depth_ = kDefaultTxQueue;
   Endpoint wire_;                      // the transport's frames (Bit timing)
   InFlight in_flight_;
+  // Endpoints whose transmit queue holds a frame, a bit each (the wire's queue is wire_.tx), so
+  // arbitration looks only at queues with something in them.
+  std::vector<std::uint64_t> tx_pending_;
+  // No queue head is ready before this instant (a lower bound: exact after start_next() scanned
+  // the queues, lowered when a head appears): deliver() skips the queues while it is >= now.
+  std::int64_t ready_floor_ns_ = std::numeric_limits<std::int64_t>::max();
+  int bus_off_count_ = 0;              // endpoints in BusOff (only they count recessive bits)
+  int rec_nonzero_count_ = 0;          // endpoints whose REC is above 0 (a success lowers it)
   std::int64_t idle_ns_ = 0;           // the bus is free from here
   std::int64_t idle_accounted_ns_ = 0; // idle time counted for bus-off recovery up to here
   std::int64_t now_ns_ = 0;            // the last deliver()

@@ -6,12 +6,13 @@ namespace sim {
 
 namespace {
 
-// The frame's bits SOF .. CRC sequence are packed MSB-first into bytes, so the CRC and the stuff
-// bits are found a byte at a time through tables (the bus times every frame with frame_bits()).
-// tests/sim/can_bit_timing_test.cpp checks both against a bit-by-bit reference.
+// The bus times every frame with frame_bits(), so it works a byte at a time through tables
+// instead of bit by bit. The bits before the CRC sequence are laid out as whole bytes: zero bits
+// put in front of SOF leave the CRC unchanged (the register stays 0), so the header (SOF ..
+// DLC: 19 bits standard, 39 extended) is padded to 3 or 5 bytes and the data bytes follow as
+// they are. Stuff counting starts at SOF, inside the first byte, and ends 7 bits into the
+// CRC's second byte. tests/sim/can_bit_timing_test.cpp holds both to the bit-by-bit definition.
 
-// SOF .. CRC sequence of the longest frame: 1 + 32 + 6 + 64 + 15 = 118 bits, 15 bytes.
-constexpr unsigned kMaxRegionBytes = (1 + 32 + 6 + 64 + 15 + 7) / 8;
 constexpr std::uint16_t kCrcPoly = 0x4599;
 
 // One bit through the CRC-15 register (ISO 11898-1: the next bit XOR the register's top bit).
@@ -34,65 +35,54 @@ constexpr std::array<std::uint16_t, 256> make_crc_table() {
 }
 constexpr auto kCrcTable = make_crc_table();
 
+constexpr std::uint16_t crc_byte(std::uint16_t crc, std::uint8_t byte) {
+  return static_cast<std::uint16_t>(((crc << 8) & 0x7FFF) ^ kCrcTable[((crc >> 7) ^ byte) & 0xFFu]);
+}
+
 // The stuffing state between two bits: the level of the last bit on the wire (stuff bits count)
 // and how many bits of that level end the stream (1..4; a fifth is followed by a stuff bit, which
 // starts a run of one). state = level * 4 + run - 1. Before SOF the state is "recessive, run 1":
 // SOF is dominant, so it starts a run of its own exactly as on an idle bus.
 constexpr unsigned kStuffStart = 1 * 4 + 0;
 
-struct StuffStep {
-  unsigned state;
-  unsigned stuffed;  // 0 or 1
-};
-
-constexpr StuffStep stuff_bit(unsigned state, unsigned bit) {
+constexpr unsigned stuff_bit(unsigned state, unsigned bit, unsigned& stuffed) {
   const unsigned level = state >> 2;
-  unsigned run = (state & 3u) + 1;
-  if (bit == level) {
-    ++run;
-  } else {
-    run = 1;
+  const unsigned run = bit == level ? (state & 3u) + 2 : 1;
+  if (run == 5) {  // the stuff bit: the other level, a run of one
+    ++stuffed;
+    return (level ^ 1u) * 4;
   }
-  if (run == 5) return {(level ^ 1u) * 4, 1};  // the stuff bit: the other level, a run of one
-  return {bit * 4 + run - 1, 0};
+  return bit * 4 + run - 1;
 }
 
-// Per state and byte: the state after the byte's eight bits (low 3 bits) and the stuff bits they
-// need (above).
-constexpr std::array<std::array<std::uint8_t, 256>, 8> make_stuff_table() {
-  std::array<std::array<std::uint8_t, 256>, 8> t{};
+// An entry: the state after the bits (low 3 bits) and the stuff bits they need (above).
+using StuffTable = std::array<std::array<std::uint8_t, 256>, 8>;
+
+// Per state, the last `width` bits of the index, MSB first.
+constexpr StuffTable make_stuff_table(unsigned width) {
+  StuffTable t{};
   for (unsigned s = 0; s < 8; ++s) {
-    for (unsigned b = 0; b < 256; ++b) {
+    for (unsigned v = 0; v < 256; ++v) {
       unsigned state = s;
       unsigned stuffed = 0;
-      for (unsigned i = 8; i-- > 0;) {
-        const auto step = stuff_bit(state, (b >> i) & 1u);
-        state = step.state;
-        stuffed += step.stuffed;
-      }
-      t[s][b] = static_cast<std::uint8_t>(stuffed << 3 | state);
+      for (unsigned i = width; i-- > 0;) state = stuff_bit(state, (v >> i) & 1u, stuffed);
+      t[s][v] = static_cast<std::uint8_t>(stuffed << 3 | state);
     }
   }
   return t;
 }
-constexpr auto kStuffTable = make_stuff_table();
+constexpr StuffTable kStuff8 = make_stuff_table(8);
+constexpr StuffTable kStuff7 = make_stuff_table(7);  // the CRC's last 7 bits; the extended first byte
+constexpr StuffTable kStuff3 = make_stuff_table(3);  // the standard first byte: SOF, ID10, ID9
 
-// Packs bit fields MSB-first into whole bytes; up to 7 bits wait in `pending`.
-struct BitPacker {
-  std::array<std::uint8_t, kMaxRegionBytes + 1> bytes{};
-  unsigned full = 0;      // whole bytes written
-  std::uint64_t acc = 0;  // the low `pending` bits are the ones not yet in a byte
-  unsigned pending = 0;
-  // width + 7 pending bits must fit in acc: width <= 57.
-  void put(std::uint64_t value, unsigned width) {
-    acc = (acc << width) | value;
-    pending += width;
-    while (pending >= 8) {
-      pending -= 8;
-      bytes[full++] = static_cast<std::uint8_t>(acc >> pending);
-    }
+struct Stuffing {
+  unsigned state = kStuffStart;
+  unsigned bits = 0;
+  void add(const StuffTable& table, unsigned value) {
+    const std::uint8_t e = table[state][value & 0xFFu];
+    bits += e >> 3;
+    state = e & 7u;
   }
-  unsigned tail() const { return static_cast<unsigned>(acc) & ((1u << pending) - 1u); }
 };
 
 }  // namespace
@@ -104,60 +94,44 @@ std::uint16_t can_crc15(const std::uint8_t* bits, unsigned count) {
 }
 
 FrameBits frame_bits(const CanFrame& frame) {
-  BitPacker w;
   const unsigned dlc = frame.dlc > 8 ? 8u : frame.dlc;
+  const unsigned data_bytes = frame.rtr ? 0u : dlc;
   const std::uint64_t rtr = frame.rtr ? 1 : 0;
+  // SOF .. DLC, right-aligned in whole bytes (the zero bits in front are padding).
+  std::uint64_t header;
+  unsigned header_bytes;
+  unsigned header_bits;
   if (!frame.extended) {
-    // SOF, 11-bit identifier, RTR, IDE, r0, DLC: 19 bits.
-    w.put((std::uint64_t{frame.id & 0x7FF} << 7) | (rtr << 6) | dlc, 19);
+    // SOF, 11-bit identifier, RTR, IDE, r0, DLC.
+    header = (std::uint64_t{frame.id & 0x7FF} << 7) | (rtr << 6) | dlc;
+    header_bytes = 3;
+    header_bits = 19;
   } else {
-    // SOF, base identifier, SRR, IDE, 18-bit extension, RTR, r1, r0, DLC: 39 bits.
-    w.put((std::uint64_t{(frame.id >> 18) & 0x7FF} << 27) | (std::uint64_t{3} << 25) |
-              (std::uint64_t{frame.id & 0x3FFFF} << 7) | (rtr << 6) | dlc,
-          39);
+    // SOF, base identifier, SRR, IDE, 18-bit extension, RTR, r1, r0, DLC.
+    header = (std::uint64_t{(frame.id >> 18) & 0x7FF} << 27) | (std::uint64_t{3} << 25) |
+             (std::uint64_t{frame.id & 0x3FFFF} << 7) | (rtr << 6) | dlc;
+    header_bytes = 5;
+    header_bits = 39;
   }
-  if (!frame.rtr)
-    for (unsigned i = 0; i < dlc; ++i) w.put(frame.data[i], 8);
-
-  FrameBits out;
   std::uint16_t crc = 0;
-  for (unsigned i = 0; i < w.full; ++i)
-    crc = static_cast<std::uint16_t>(((crc << 8) & 0x7FFF) ^ kCrcTable[((crc >> 7) ^ w.bytes[i]) & 0xFFu]);
-  const unsigned tail = w.tail();
-  for (unsigned i = w.pending; i-- > 0;) crc = crc_bit(crc, (tail >> i) & 1u);
-  out.crc = crc;
-  out.stuffed_region = w.full * 8 + w.pending + 15;
-  w.put(crc, 15);
+  for (unsigned i = header_bytes; i-- > 0;) crc = crc_byte(crc, static_cast<std::uint8_t>(header >> (8 * i)));
+  for (unsigned i = 0; i < data_bytes; ++i) crc = crc_byte(crc, frame.data[i]);
 
   // After five equal bits the transmitter inserts one of the other level; it counts as the
   // first bit of the next run.
-  unsigned state = kStuffStart;
-  unsigned stuffed = 0;
-  for (unsigned i = 0; i < w.full; ++i) {
-    const std::uint8_t e = kStuffTable[state][w.bytes[i]];
-    stuffed += e >> 3;
-    state = e & 7u;
-  }
-  const unsigned last = w.tail();
-  for (unsigned i = w.pending; i-- > 0;) {
-    const auto step = stuff_bit(state, (last >> i) & 1u);
-    state = step.state;
-    stuffed += step.stuffed;
-  }
-  out.stuff_bits = stuffed;
-  return out;
-}
+  Stuffing st;
+  const unsigned top = header_bytes - 1;
+  st.add(frame.extended ? kStuff7 : kStuff3, static_cast<unsigned>(header >> (8 * top)));
+  for (unsigned i = top; i-- > 0;) st.add(kStuff8, static_cast<unsigned>(header >> (8 * i)));
+  for (unsigned i = 0; i < data_bytes; ++i) st.add(kStuff8, frame.data[i]);
+  st.add(kStuff8, crc >> 7);
+  st.add(kStuff7, crc & 0x7Fu);
 
-std::uint64_t arbitration_key(const CanFrame& frame) {
-  // 11 base bits, RTR|SRR, IDE, 18 extension bits, RTR (extended only): 32 bits, MSB first.
-  std::uint64_t key;
-  if (!frame.extended) {
-    key = (static_cast<std::uint64_t>(frame.id & 0x7FF) << 21) | (static_cast<std::uint64_t>(frame.rtr) << 20);
-  } else {
-    key = (static_cast<std::uint64_t>((frame.id >> 18) & 0x7FF) << 21) | (1ull << 20) | (1ull << 19) |
-          (static_cast<std::uint64_t>(frame.id & 0x3FFFF) << 1) | static_cast<std::uint64_t>(frame.rtr);
-  }
-  return key;
+  FrameBits out;
+  out.stuffed_region = header_bits + 8 * data_bytes + 15;
+  out.stuff_bits = st.bits;
+  out.crc = crc;
+  return out;
 }
 
 }  // namespace sim

@@ -34,6 +34,12 @@ FrameBits frame_bits(const CanFrame& frame);
 
 /// The arbitration order key: the arbitration field's bits (ID, RTR/SRR, IDE, extended ID,
 /// RTR) as one number; the lower key wins arbitration, since dominant is 0.
-std::uint64_t arbitration_key(const CanFrame& frame);
+inline std::uint64_t arbitration_key(const CanFrame& frame) {
+  // 11 base bits, RTR|SRR, IDE, 18 extension bits, RTR (extended only): 32 bits, MSB first.
+  if (!frame.extended)
+    return (static_cast<std::uint64_t>(frame.id & 0x7FF) << 21) | (static_cast<std::uint64_t>(frame.rtr) << 20);
+  return (static_cast<std::uint64_t>((frame.id >> 18) & 0x7FF) << 21) | (1ull << 20) | (1ull << 19) |
+         (static_cast<std::uint64_t>(frame.id & 0x3FFFF) << 1) | static_cast<std::uint64_t>(frame.rtr);
+}
 
 }  // namespace sim
