@@ -2,73 +2,9 @@
 
 namespace canopen {
 
-std::size_t type_size(DataType t) {
-  switch (t) {
-    case DataType::Boolean:
-    case DataType::Integer8:
-    case DataType::Unsigned8: return 1;
-    case DataType::Integer16:
-    case DataType::Unsigned16: return 2;
-    case DataType::Integer24:
-    case DataType::Unsigned24: return 3;
-    case DataType::Integer32:
-    case DataType::Unsigned32:
-    case DataType::Real32: return 4;
-    case DataType::Integer40:
-    case DataType::Unsigned40: return 5;
-    case DataType::Integer48:
-    case DataType::Unsigned48:
-    case DataType::TimeOfDay:
-    case DataType::TimeDifference: return 6;
-    case DataType::Integer56:
-    case DataType::Unsigned56: return 7;
-    case DataType::Integer64:
-    case DataType::Unsigned64:
-    case DataType::Real64: return 8;
-    case DataType::VisibleString:
-    case DataType::OctetString:
-    case DataType::UnicodeString:
-    case DataType::Domain: return 0;
-  }
-  return 0;
-}
-
 bool is_known_type(std::uint16_t code) {
   return (code >= 0x01 && code <= 0x0D) || code == 0x0F || (code >= 0x10 && code <= 0x16) || (code >= 0x18 && code <= 0x1B);
 }
-
-bool is_signed_integer(DataType t) {
-  switch (t) {
-    case DataType::Integer8:
-    case DataType::Integer16:
-    case DataType::Integer24:
-    case DataType::Integer32:
-    case DataType::Integer40:
-    case DataType::Integer48:
-    case DataType::Integer56:
-    case DataType::Integer64: return true;
-    default: return false;
-  }
-}
-
-bool is_unsigned_integer(DataType t) {
-  switch (t) {
-    case DataType::Boolean:
-    case DataType::Unsigned8:
-    case DataType::Unsigned16:
-    case DataType::Unsigned24:
-    case DataType::Unsigned32:
-    case DataType::Unsigned40:
-    case DataType::Unsigned48:
-    case DataType::Unsigned56:
-    case DataType::Unsigned64: return true;
-    default: return false;
-  }
-}
-
-bool is_real(DataType t) { return t == DataType::Real32 || t == DataType::Real64; }
-
-bool is_variable_length(DataType t) { return type_size(t) == 0; }
 
 std::string_view type_name(DataType t) {
   switch (t) {

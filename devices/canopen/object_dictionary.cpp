@@ -7,39 +7,6 @@
 
 namespace canopen {
 
-std::int64_t decode_signed(std::span<const std::uint8_t> bytes) {
-  const std::size_t n = std::min<std::size_t>(bytes.size(), 8);
-  if (n == 0) return 0;
-  std::uint64_t u = decode_unsigned(bytes);
-  if (n < 8 && (bytes[n - 1] & 0x80)) u |= ~std::uint64_t{0} << (8 * n);
-  return static_cast<std::int64_t>(u);
-}
-
-std::uint64_t decode_unsigned(std::span<const std::uint8_t> bytes) {
-  std::uint64_t u = 0;
-  const std::size_t n = std::min<std::size_t>(bytes.size(), 8);
-  for (std::size_t i = 0; i < n; ++i) u |= static_cast<std::uint64_t>(bytes[i]) << (8 * i);
-  return u;
-}
-
-double decode_real(DataType type, std::span<const std::uint8_t> bytes) {
-  if (type == DataType::Real32 && bytes.size() >= 4) {
-    float f;
-    std::memcpy(&f, bytes.data(), 4);
-    return f;
-  }
-  if (type == DataType::Real64 && bytes.size() >= 8) {
-    double d;
-    std::memcpy(&d, bytes.data(), 8);
-    return d;
-  }
-  return 0.0;
-}
-
-void encode_unsigned(std::uint64_t v, std::span<std::uint8_t> out) {
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = i < 8 ? static_cast<std::uint8_t>(v >> (8 * i)) : 0;
-}
-
 int compare_values(DataType type, std::span<const std::uint8_t> a, std::span<const std::uint8_t> b) {
   if (is_real(type)) {
     const double x = decode_real(type, a), y = decode_real(type, b);

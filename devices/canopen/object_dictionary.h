@@ -4,6 +4,7 @@
 // (CANopenNode's OD extensions, Lely's typed OnWrite): the SDO server never learns what a valve is.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -106,11 +107,115 @@ struct OdObject {
   std::map<std::uint8_t, OdEntry> entries;
 };
 
-/// Numeric helpers on little-endian byte strings of a given CiA type.
-std::int64_t decode_signed(std::span<const std::uint8_t> bytes);
-std::uint64_t decode_unsigned(std::span<const std::uint8_t> bytes);
-double decode_real(DataType type, std::span<const std::uint8_t> bytes);
-void encode_unsigned(std::uint64_t v, std::span<std::uint8_t> out);
+/// Numeric helpers on little-endian byte strings of a given CiA type. Inline, with the common
+/// widths as single loads and stores: devices and PDOs decode and encode values every tick.
+inline std::uint64_t decode_unsigned(std::span<const std::uint8_t> bytes) {
+  const std::uint8_t* p = bytes.data();
+  if constexpr (std::endian::native == std::endian::little) {
+    switch (bytes.size()) {
+      case 0: return 0;
+      case 1: return p[0];
+      case 2: {
+        std::uint16_t v;
+        std::memcpy(&v, p, 2);
+        return v;
+      }
+      case 4: {
+        std::uint32_t v;
+        std::memcpy(&v, p, 4);
+        return v;
+      }
+      default:
+        if (bytes.size() >= 8) {
+          std::uint64_t v;
+          std::memcpy(&v, p, 8);
+          return v;
+        }
+        break;
+    }
+  }
+  std::uint64_t u = 0;
+  const std::size_t n = bytes.size() < 8 ? bytes.size() : 8;
+  for (std::size_t i = 0; i < n; ++i) u |= static_cast<std::uint64_t>(p[i]) << (8 * i);
+  return u;
+}
+
+inline std::int64_t decode_signed(std::span<const std::uint8_t> bytes) {
+  const std::size_t n = bytes.size() < 8 ? bytes.size() : 8;
+  switch (n) {
+    case 0: return 0;
+    case 1: return static_cast<std::int8_t>(bytes[0]);
+    case 2: return static_cast<std::int16_t>(decode_unsigned(bytes));
+    case 4: return static_cast<std::int32_t>(decode_unsigned(bytes));
+    case 8: return static_cast<std::int64_t>(decode_unsigned(bytes));
+    default: {
+      std::uint64_t u = decode_unsigned(bytes);
+      if (bytes[n - 1] & 0x80) u |= ~std::uint64_t{0} << (8 * n);
+      return static_cast<std::int64_t>(u);
+    }
+  }
+}
+
+inline double decode_real(DataType type, std::span<const std::uint8_t> bytes) {
+  if (type == DataType::Real32 && bytes.size() >= 4) {
+    float f;
+    std::memcpy(&f, bytes.data(), 4);
+    return f;
+  }
+  if (type == DataType::Real64 && bytes.size() >= 8) {
+    double d;
+    std::memcpy(&d, bytes.data(), 8);
+    return d;
+  }
+  return 0.0;
+}
+
+/// Writes the low out.size() bytes of v (zeros beyond 8 bytes).
+inline void encode_unsigned(std::uint64_t v, std::span<std::uint8_t> out) {
+  std::uint8_t* p = out.data();
+  if constexpr (std::endian::native == std::endian::little) {
+    switch (out.size()) {
+      case 1: p[0] = static_cast<std::uint8_t>(v); return;
+      case 2: {
+        const auto w = static_cast<std::uint16_t>(v);
+        std::memcpy(p, &w, 2);
+        return;
+      }
+      case 4: {
+        const auto w = static_cast<std::uint32_t>(v);
+        std::memcpy(p, &w, 4);
+        return;
+      }
+      case 8: std::memcpy(p, &v, 8); return;
+      default: break;
+    }
+  }
+  for (std::size_t i = 0; i < out.size(); ++i) p[i] = i < 8 ? static_cast<std::uint8_t>(v >> (8 * i)) : 0;
+}
+
+/// The size encode() gives a T value of `type`: the type's size, sizeof(T) for variable length.
+template <typename T>
+constexpr std::size_t encoded_size(DataType type) {
+  const std::size_t n = type_size(type);
+  return n == 0 ? sizeof(T) : n;
+}
+/// Encodes a typed value into `type`'s byte representation, into `out` (encoded_size<T>(type)
+/// bytes), without allocating.
+template <typename T>
+void encode_into(DataType type, T v, std::span<std::uint8_t> out) {
+  static_assert(std::is_arithmetic_v<T>);
+  if (type == DataType::Real32) {
+    const float f = static_cast<float>(v);
+    std::memcpy(out.data(), &f, 4);
+  } else if (type == DataType::Real64) {
+    const double d = static_cast<double>(v);
+    std::memcpy(out.data(), &d, 8);
+  } else if constexpr (std::is_floating_point_v<T>) {
+    encode_unsigned(static_cast<std::uint64_t>(static_cast<std::int64_t>(v)), out);
+  } else {
+    encode_unsigned(static_cast<std::uint64_t>(v), out);
+  }
+}
 /// Compares two values of `type`; <0, 0, >0. Strings/domains compare as equal.
 int compare_values(DataType type, std::span<const std::uint8_t> a, std::span<const std::uint8_t> b);
 /// Widens (sign- or zero-extends) or truncates little-endian bytes of `type` to `size` bytes.
@@ -244,26 +349,16 @@ T OdEntry::as() const {
 
 template <typename T>
 Bytes ObjectDictionary::encode(DataType type, T v) {
-  static_assert(std::is_arithmetic_v<T>);
-  const std::size_t n = type_size(type);
-  Bytes out(n == 0 ? sizeof(T) : n, 0);
-  if (type == DataType::Real32) {
-    const float f = static_cast<float>(v);
-    std::memcpy(out.data(), &f, 4);
-  } else if (type == DataType::Real64) {
-    const double d = static_cast<double>(v);
-    std::memcpy(out.data(), &d, 8);
-  } else if constexpr (std::is_floating_point_v<T>) {
-    encode_unsigned(static_cast<std::uint64_t>(static_cast<std::int64_t>(v)), out);
-  } else {
-    encode_unsigned(static_cast<std::uint64_t>(v), out);
-  }
+  Bytes out(encoded_size<T>(type), 0);
+  encode_into(type, v, out);
   return out;
 }
 
 template <typename T>
 void OdEntry::assign(T v) {
-  value = ObjectDictionary::encode(type, v);
+  const std::size_t n = encoded_size<T>(type);
+  if (value.size() != n) value.assign(n, 0);  // a fixed-size entry keeps its storage: no allocation
+  encode_into(type, v, value);
 }
 
 template <typename T>
@@ -273,13 +368,7 @@ T ObjectDictionary::get(std::uint16_t index, std::uint8_t sub) const {
 
 template <typename T>
 void ObjectDictionary::set(std::uint16_t index, std::uint8_t sub, T v) {
-  auto& e = must_entry(index, sub);
-  const auto bytes = encode(e.type, v);
-  if (e.value.size() == bytes.size()) {
-    std::memcpy(e.value.data(), bytes.data(), bytes.size());  // no reallocation on the hot path
-  } else {
-    e.value = bytes;
-  }
+  must_entry(index, sub).assign(v);
 }
 
 template <typename T, typename F>

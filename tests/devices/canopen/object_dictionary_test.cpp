@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "tests/devices/canopen/generic_node.h"
 
 using namespace canopen;
@@ -111,4 +113,40 @@ TEST(ObjectDictionary, ResizeValueExtendsSigned) {
   EXPECT_EQ(resize_value(DataType::Integer16, Bytes{0xFE}, 2), (Bytes{0xFE, 0xFF}));
   EXPECT_EQ(resize_value(DataType::Unsigned16, Bytes{0xFE}, 2), (Bytes{0xFE, 0x00}));
   EXPECT_EQ(resize_value(DataType::Integer32, Bytes{0x01, 0x02, 0x03, 0x04}, 2), (Bytes{0x01, 0x02}));
+}
+
+TEST(ObjectDictionary, CodecsHandleEveryWidthLittleEndianWithSignExtension) {
+  const Bytes b{0x81, 0x82, 0x83, 0x84, 0x85, 0x86, 0x87, 0x88, 0x89};
+  const std::span<const std::uint8_t> s(b);
+  EXPECT_EQ(decode_unsigned(s.first(0)), 0u);
+  EXPECT_EQ(decode_unsigned(s.first(1)), 0x81u);
+  EXPECT_EQ(decode_unsigned(s.first(2)), 0x8281u);
+  EXPECT_EQ(decode_unsigned(s.first(3)), 0x838281u);
+  EXPECT_EQ(decode_unsigned(s.first(4)), 0x84838281u);
+  EXPECT_EQ(decode_unsigned(s.first(6)), 0x868584838281u);
+  EXPECT_EQ(decode_unsigned(s.first(8)), 0x8887868584838281u);
+  EXPECT_EQ(decode_unsigned(s), 0x8887868584838281u);  // beyond 8 bytes: the first 8
+  EXPECT_EQ(decode_signed(s.first(0)), 0);
+  EXPECT_EQ(decode_signed(s.first(1)), -127);
+  EXPECT_EQ(decode_signed(s.first(2)), static_cast<std::int16_t>(0x8281));
+  EXPECT_EQ(decode_signed(s.first(3)), 0x838281 - 0x1000000);
+  EXPECT_EQ(decode_signed(s.first(4)), static_cast<std::int32_t>(0x84838281u));
+  EXPECT_EQ(decode_signed(s.first(5)), static_cast<std::int64_t>(0x8584838281u) - (std::int64_t{1} << 40));
+  EXPECT_EQ(decode_signed(s.first(8)), static_cast<std::int64_t>(0x8887868584838281u));
+  EXPECT_EQ(decode_signed(Bytes{0x7F, 0x00, 0x00}), 0x7F);
+
+  for (std::size_t n : {1u, 2u, 3u, 4u, 5u, 7u, 8u, 10u}) {
+    Bytes out(n, 0xEE);
+    encode_unsigned(0x0807060504030201u, out);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(out[i], i < 8 ? i + 1 : 0) << n << " bytes, byte " << i;
+  }
+  EXPECT_EQ(encoded_size<std::int16_t>(DataType::Unsigned32), 4u);
+  EXPECT_EQ(encoded_size<std::int16_t>(DataType::Domain), 2u);
+  std::array<std::uint8_t, 4> real{};
+  encode_into(DataType::Real32, 2, std::span<std::uint8_t>(real));
+  EXPECT_EQ(value_as<double>(DataType::Real32, real), 2.0);
+  std::array<std::uint8_t, 2> i16{};
+  encode_into(DataType::Integer16, -2.0, std::span<std::uint8_t>(i16));
+  EXPECT_EQ(value_as<int>(DataType::Integer16, i16), -2);
+  EXPECT_EQ(value_as<int>(DataType::Unsigned16, i16), 0xFFFE);
 }
