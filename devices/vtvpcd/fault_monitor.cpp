@@ -1,6 +1,7 @@
 #include "devices/vtvpcd/fault_monitor.h"
 
 #include <algorithm>
+#include <bit>
 
 #include "devices/canopen/emergency.h"
 
@@ -71,6 +72,34 @@ constexpr bool rows_in_enum_order() {
   return true;
 }
 static_assert(rows_in_enum_order());
+
+using Set = std::uint32_t;
+constexpr Set bit_of(C c) { return Set{1} << static_cast<unsigned>(c); }
+
+/// The rows matching `pred`, as a mask.
+template <typename Pred>
+constexpr Set rows_where(Pred pred) {
+  Set m = 0;
+  for (const auto& d : kDefinitions)
+    if (pred(d)) m |= bit_of(d.condition);
+  return m;
+}
+constexpr Set kEvents = rows_where([](const FaultDefinition& d) { return d.event; });
+/// Latching with fault_latch: the numbered faults whose printed reaction is Stop (also fault 16
+/// in report mode).
+constexpr Set kNumberedStops = rows_where([](const FaultDefinition& d) { return d.number >= 0 && d.reaction == R::Stop; });
+constexpr Set kStops = rows_where([](const FaultDefinition& d) { return d.reaction == R::Stop; });
+constexpr Set kNumbered = rows_where([](const FaultDefinition& d) { return d.number >= 0; });
+
+/// For each row, the rows that report the same EMCY code (itself included).
+constexpr std::array<Set, kDefinitions.size()> same_code_rows() {
+  std::array<Set, kDefinitions.size()> m{};
+  for (std::size_t i = 0; i < kDefinitions.size(); ++i)
+    for (const auto& o : kDefinitions)
+      if (o.emcy == kDefinitions[i].emcy) m[i] |= bit_of(o.condition);
+  return m;
+}
+constexpr auto kSameCode = same_code_rows();
 }  // namespace
 
 std::span<const FaultDefinition> fault_definitions() { return kDefinitions; }
@@ -84,20 +113,17 @@ std::optional<Condition> find_condition(std::string_view name) {
 
 FaultMonitor::FaultMonitor(canopen::Emergency& emcy, const Settings& settings) : emcy_(emcy), s_(settings) {}
 
-Reaction FaultMonitor::reaction(const FaultDefinition& d) const {
-  if (d.condition == C::BusTimeout && s_.timeout_reaction == TimeoutReaction::Report) return R::Report;
-  return d.reaction;
+FaultMonitor::Set FaultMonitor::stopping() const {
+  if (s_.timeout_reaction == TimeoutReaction::Report) return kStops & ~bit(C::BusTimeout);
+  return kStops;
 }
 
-bool FaultMonitor::latches(const FaultDefinition& d) const {
-  if (d.event) return true;
-  return d.number >= 0 && d.reaction == R::Stop && s_.fault_latch;  // also fault 16 in report mode
-}
+FaultMonitor::Set FaultMonitor::latching() const { return kEvents | (s_.fault_latch ? kNumberedStops : 0); }
 
-void FaultMonitor::signal_event(Condition c) { events_.set(static_cast<std::size_t>(c)); }
+void FaultMonitor::signal_event(Condition c) { events_ |= bit(c); }
 
 void FaultMonitor::activate(Condition c) {
-  active_.set(static_cast<std::size_t>(c));
+  active_ |= bit(c);
   // Move to the end of the activation order.
   auto* end = order_.begin() + order_len_;
   auto* it = std::find(order_.begin(), end, c);
@@ -109,26 +135,26 @@ void FaultMonitor::activate(Condition c) {
 }
 
 void FaultMonitor::update(bool enable_rising_edge) {
-  for (const auto& d : kDefinitions) {
-    const auto i = static_cast<std::size_t>(d.condition);
-    const bool present = injected_.test(i) || detected_.test(i) || events_.test(i);
-    events_.reset(i);  // an event is present for one evaluation only
-    if (present) {
-      if (!active_.test(i)) activate(d.condition);
-    } else if (active_.test(i) && (!latches(d) || enable_rising_edge)) {
-      active_.reset(i);
-    }
-  }
+  const Set present = injected_ | detected_ | events_;
+  events_ = 0;  // an event is present for one evaluation only
+  // New ones join the activation order in table order; gone ones drop unless they latch.
+  for (Set rising = present & ~active_; rising != 0; rising &= rising - 1)
+    activate(static_cast<Condition>(std::countr_zero(rising)));
+  const Set gone = active_ & ~present & (enable_rising_edge ? ~Set{0} : ~latching());
+  active_ &= ~gone;
   sync_emergency();
 }
 
 void FaultMonitor::sync_emergency() {
   std::uint8_t bits = 0;
-  for (std::size_t n = 0; n < order_len_; ++n)
-    if (active(order_[n])) bits |= definition(order_[n]).error_register;
+  for (Set a = active_; a != 0; a &= a - 1) bits |= kDefinitions[static_cast<std::size_t>(std::countr_zero(a))].error_register;
   if (bits != register_bits_) {  // 0x1001 is rewritten only when it changes (no per-cycle work)
     register_bits_ = bits;
     emcy_.set_extra_register_bits(bits);
+  }
+  if (active_ == 0 && !emcy_.any_active()) {  // nothing to raise, nothing to clear
+    order_len_ = 0;
+    return;
   }
   // New codes first (in order of occurrence), then the ones gone, so the "no error" EMCY can only
   // follow when nothing at all is left.
@@ -137,11 +163,9 @@ void FaultMonitor::sync_emergency() {
     // The register comes from the extra bits alone: one code may carry different bits (0x1000).
     if (active(d.condition) && !emcy_.active(d.emcy)) emcy_.raise(d.emcy, 0);
   }
-  for (const auto& d : kDefinitions) {
-    if (!emcy_.active(d.emcy)) continue;
-    const bool still = std::any_of(kDefinitions.begin(), kDefinitions.end(),
-                                   [&](const FaultDefinition& o) { return o.emcy == d.emcy && active(o.condition); });
-    if (!still) emcy_.clear(d.emcy);
+  for (std::size_t i = 0; i < kDefinitions.size(); ++i) {
+    const auto& d = kDefinitions[i];
+    if ((kSameCode[i] & active_) == 0 && emcy_.active(d.emcy)) emcy_.clear(d.emcy);
   }
   // Drop inactive entries from the activation order.
   order_len_ = static_cast<std::size_t>(
@@ -150,29 +174,27 @@ void FaultMonitor::sync_emergency() {
 }
 
 void FaultMonitor::reset() {
-  detected_.reset();
-  events_.reset();
-  active_.reset();
+  detected_ = 0;
+  events_ = 0;
+  active_ = 0;
   order_len_ = 0;
   register_bits_ = 0;
   emcy_.set_extra_register_bits(0);
   emcy_.clear_all();  // silent: the node is initialising
 }
 
-bool FaultMonitor::stop_active() const {
-  for (const auto& d : kDefinitions)
-    if (active(d.condition) && reaction(d) == R::Stop) return true;
-  return false;
-}
+bool FaultMonitor::stop_active() const { return (active_ & stopping()) != 0; }
 
 std::uint16_t FaultMonitor::bus_status() const {
   std::uint8_t number = 0;
   bool any_numbered = false;
-  for (std::size_t n = 0; n < order_len_; ++n) {
-    const auto& d = definition(order_[n]);
-    if (active(d.condition) && d.number >= 0) {
-      number = static_cast<std::uint8_t>(d.number);  // the latest one wins
-      any_numbered = true;
+  if ((active_ & kNumbered) != 0) {
+    for (std::size_t n = 0; n < order_len_; ++n) {
+      const auto& d = definition(order_[n]);
+      if (active(d.condition) && d.number >= 0) {
+        number = static_cast<std::uint8_t>(d.number);  // the latest one wins
+        any_numbered = true;
+      }
     }
   }
   const std::uint8_t flags = emcy_.error_register();
@@ -181,12 +203,9 @@ std::uint16_t FaultMonitor::bus_status() const {
 }
 
 std::uint8_t FaultMonitor::shorted_outputs() const {
-  std::uint8_t mask = 0;
-  for (int n = 0; n < 8; ++n) {
-    const auto c = static_cast<Condition>(static_cast<int>(C::Do1Short) + n);
-    if (active(c)) mask |= static_cast<std::uint8_t>(1u << n);
-  }
-  return mask;
+  // Do1Short..Do7Short are consecutive, in the 0x2F26 bit order.
+  static_assert(static_cast<int>(C::Do7Short) - static_cast<int>(C::Do1Short) == 7);
+  return static_cast<std::uint8_t>(active_ >> static_cast<unsigned>(C::Do1Short));
 }
 
 }  // namespace vtvpcd

@@ -6,7 +6,6 @@
 #pragma once
 
 #include <array>
-#include <bitset>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -80,10 +79,10 @@ class FaultMonitor {
   FaultMonitor(canopen::Emergency& emcy, const Settings& settings);
 
   /// A cause injected from the side interface (hardware: survives resets until removed).
-  void set_injected(Condition c, bool present) { injected_.set(static_cast<std::size_t>(c), present); }
+  void set_injected(Condition c, bool present) { assign(injected_, c, present); }
   /// A cause the emulator detects itself (bus timeout, Trigger, loop monitoring).
-  void set_detected(Condition c, bool present) { detected_.set(static_cast<std::size_t>(c), present); }
-  bool injected(Condition c) const { return injected_.test(static_cast<std::size_t>(c)); }
+  void set_detected(Condition c, bool present) { assign(detected_, c, present); }
+  bool injected(Condition c) const { return (injected_ & bit(c)) != 0; }
   /// An event error (watchdog): active until acknowledged.
   void signal_event(Condition c);
 
@@ -94,8 +93,8 @@ class FaultMonitor {
   /// raise again (with their EMCY) in the first cycle after the boot-up frame.
   void reset();
 
-  bool active(Condition c) const { return active_.test(static_cast<std::size_t>(c)); }
-  bool any_active() const { return active_.any(); }
+  bool active(Condition c) const { return (active_ & bit(c)) != 0; }
+  bool any_active() const { return active_ != 0; }
   bool stop_active() const;
   /// Bus Status 0x2C68: error flags (= error register, A25) << 8 | number of the latest fault.
   std::uint16_t bus_status() const;
@@ -103,15 +102,21 @@ class FaultMonitor {
   std::uint8_t shorted_outputs() const;
 
  private:
-  using Set = std::bitset<static_cast<std::size_t>(Condition::kCount)>;
-  bool latches(const FaultDefinition& d) const;
-  Reaction reaction(const FaultDefinition& d) const;
+  /// One bit per condition (bit n = Condition n): the per-cycle work is a few mask operations.
+  using Set = std::uint32_t;
+  static_assert(static_cast<std::size_t>(Condition::kCount) <= 32);
+  static constexpr Set bit(Condition c) { return Set{1} << static_cast<unsigned>(c); }
+  static void assign(Set& set, Condition c, bool present) { set = present ? (set | bit(c)) : (set & ~bit(c)); }
+  /// Conditions that stay active until acknowledged once their cause is gone.
+  Set latching() const;
+  /// Conditions whose reaction is Stop (with this card's settings).
+  Set stopping() const;
   void activate(Condition c);
   void sync_emergency();
 
   canopen::Emergency& emcy_;
   const Settings& s_;
-  Set injected_, detected_, events_, active_;
+  Set injected_ = 0, detected_ = 0, events_ = 0, active_ = 0;
   /// Activation order (oldest first) for "the most recent fault".
   std::array<Condition, static_cast<std::size_t>(Condition::kCount)> order_{};
   std::size_t order_len_ = 0;

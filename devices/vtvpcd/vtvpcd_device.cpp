@@ -51,22 +51,28 @@ constexpr std::array<std::uint16_t, kSlotCount> kSlotIndex{
 bool high(double v) { return v >= 0.5; }
 }  // namespace
 
-/// The manufacturer objects' raw values, looked up by index without touching the dictionary's
-/// maps (sorted once at construction).
+/// The manufacturer objects' raw values by index, bound to their entries once: a page of 256
+/// entries per used high byte of 0x2000..0x2FFF, so a lookup is two loads and an inline decode.
 class VtvpcdDevice::OdParameters final : public ParameterSource {
  public:
   explicit OdParameters(canopen::ObjectDictionary& od) {
-    for (const auto& spec : manufacturer_objects()) entries_.emplace_back(spec.index, od.entry(spec.index, 0));
-    std::sort(entries_.begin(), entries_.end());
+    for (const auto& spec : manufacturer_objects()) {
+      if ((spec.index & 0xF000) != 0x2000) continue;  // every manual object is in 0x2000..0x2FFF
+      auto& page = pages_[(spec.index >> 8) & 0xF];
+      if (page.empty()) page.resize(256);
+      page[spec.index & 0xFF] = devices::BoundEntry(od.entry(spec.index, 0));
+    }
   }
   std::int64_t raw(std::uint16_t index) const override {
-    const auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_pair(index, static_cast<canopen::OdEntry*>(nullptr)));
-    if (it == entries_.end() || it->first != index) return 0;
-    return it->second->as<std::int64_t>();
+    if ((index & 0xF000) != 0x2000) return 0;
+    const auto& page = pages_[(index >> 8) & 0xF];
+    if (page.empty()) return 0;
+    const devices::BoundEntry& e = page[index & 0xFF];
+    return e ? e.as<std::int64_t>() : 0;
   }
 
  private:
-  std::vector<std::pair<std::uint16_t, canopen::OdEntry*>> entries_;
+  std::array<std::vector<devices::BoundEntry>, 16> pages_;
 };
 
 // ---- construction -------------------------------------------------------------------------------
@@ -95,7 +101,7 @@ VtvpcdDevice::VtvpcdDevice(Settings settings) : settings_(std::move(settings)), 
   params_ = std::make_unique<OdParameters>(node_->od());
   faults_ = std::make_unique<FaultMonitor>(node_->emergency(), settings_);
   out_.resize(kSlotCount);
-  for (std::size_t s = 0; s < kSlotCount; ++s) out_[s] = node_->od().entry(kSlotIndex[s], 0);
+  for (std::size_t s = 0; s < kSlotCount; ++s) out_[s].bind(node_->od().entry(kSlotIndex[s], 0));
   if (settings_.builtin_plant) {
     builtin_.emplace(settings_.plant, settings_.pump_type);
     apply_plant_to_inputs();
@@ -330,16 +336,30 @@ void VtvpcdDevice::control_cycle(double dt_s) {
   }
 }
 
-void VtvpcdDevice::put(std::size_t slot, std::int64_t raw) {
-  canopen::OdEntry* e = out_[slot];
+void VtvpcdDevice::OutputSlot::bind(canopen::OdEntry* e) {
+  entry = devices::BoundEntry(e);
   const bool is_signed = canopen::is_signed_integer(e->type);
   const int bits = static_cast<int>(e->value.size() * 8);
-  const std::int64_t lo = is_signed ? -(std::int64_t{1} << (bits - 1)) : 0;
-  const std::int64_t hi = is_signed ? (std::int64_t{1} << (bits - 1)) - 1 : (std::int64_t{1} << bits) - 1;
-  canopen::encode_unsigned(static_cast<std::uint64_t>(std::clamp(raw, lo, hi)), e->value);
+  lo = is_signed ? -(std::int64_t{1} << (bits - 1)) : 0;
+  hi = is_signed ? (std::int64_t{1} << (bits - 1)) - 1 : (std::int64_t{1} << bits) - 1;
 }
 
-void VtvpcdDevice::put_eu(std::size_t slot, double eu, Scale scale) { put(slot, to_raw(eu, scale)); }
+void VtvpcdDevice::put(std::size_t slot, std::int64_t raw) {
+  const OutputSlot& o = out_[slot];
+  o.entry.store(std::clamp(raw, o.lo, o.hi));
+}
+
+void VtvpcdDevice::put_eu(std::size_t slot, double eu, Scale scale) {
+  // Each slot is always published with the same scale: an unchanged EU value has the raw value
+  // converted last time (NaN never compares equal, so it is converted anew). The bytes are
+  // written every cycle all the same: a reset may have put the default there meanwhile.
+  OutputSlot& o = out_[slot];
+  if (!(eu == o.last_eu)) {
+    o.last_eu = eu;
+    o.last_raw = to_raw(eu, scale);
+  }
+  put(slot, o.last_raw);
+}
 
 void VtvpcdDevice::publish(const SetSelection& sel, double alpha_meas, double p_a, double p_b, std::uint16_t di_word) {
   const ControlOutputs& c = controller_.outputs();

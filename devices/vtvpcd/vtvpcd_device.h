@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/entry_value.h"
 #include "devices/vtvpcd/builtin_pump_model.h"
 #include "devices/vtvpcd/command_sources.h"
 #include "devices/vtvpcd/fault_monitor.h"
@@ -91,7 +93,16 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   double analog_power_f8_f10_ = 0;    ///< in: 0..1
 
   // Run state.
-  std::vector<canopen::OdEntry*> out_;  ///< read-only objects the cycle publishes, by slot
+  /// A read-only object the cycle publishes: its entry, the range of its type, and the EU value
+  /// it was last converted from (the conversion is skipped while that does not change).
+  struct OutputSlot {
+    devices::BoundEntry entry;
+    std::int64_t lo = 0, hi = 0;
+    double last_eu = std::numeric_limits<double>::quiet_NaN();
+    std::int64_t last_raw = 0;
+    void bind(canopen::OdEntry* e);
+  };
+  std::vector<OutputSlot> out_;  ///< by slot
   sim::Duration cycle_debt_{0};
   bool previous_enable_ = true;
   bool lifeguard_timeout_ = false;

@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "devices/profiles/cia406/od_value.h"
 
 namespace cia406 {
 
@@ -52,14 +51,14 @@ void CamUnit::add_objects(ObjectDictionary& od) {
 }
 
 void CamUnit::bind(ObjectDictionary& od, SdoAbort abort) {
-  state_ = od.entry(kState, 1);
-  enable_ = od.entry(kEnable, 1);
-  polarity_ = od.entry(kPolarity, 1);
+  state_ = devices::BoundEntry(od.entry(kState, 1));
+  enable_ = devices::BoundEntry(od.entry(kEnable, 1));
+  polarity_ = devices::BoundEntry(od.entry(kPolarity, 1));
   for (int k = 0; k < kCams; ++k) {
-    low_[k] = od.entry(static_cast<std::uint16_t>(kLowLimit + k), 1);
-    high_[k] = od.entry(static_cast<std::uint16_t>(kHighLimit + k), 1);
-    hysteresis_[k] = od.entry(static_cast<std::uint16_t>(kHysteresis + k), 1);
-    const OdEntry* high = high_[k];
+    low_[k] = devices::BoundEntry(od.entry(static_cast<std::uint16_t>(kLowLimit + k), 1));
+    high_[k] = devices::BoundEntry(od.entry(static_cast<std::uint16_t>(kHighLimit + k), 1));
+    hysteresis_[k] = devices::BoundEntry(od.entry(static_cast<std::uint16_t>(kHysteresis + k), 1));
+    const OdEntry* high = high_[k].entry();
     od.add_check(static_cast<std::uint16_t>(kLowLimit + k), 1,
                  [high, abort](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
                    if (origin != Origin::Sdo) return SdoAbort::None;
@@ -75,19 +74,19 @@ void CamUnit::reset() {
 }
 
 std::uint8_t CamUnit::update(std::int64_t x) {
-  const auto enabled = enable_->as<std::uint8_t>();
-  const auto inverted = polarity_->as<std::uint8_t>();
+  const auto enabled = enable_.as<std::uint8_t>();
+  const auto inverted = polarity_.as<std::uint8_t>();
   std::uint8_t state = 0;
   for (int k = 0; k < kCams; ++k) {
     Cam& c = cams_[k];
-    c.low = low_[k]->as<std::int32_t>();
-    c.high = high_[k]->as<std::int32_t>();
-    c.hysteresis = hysteresis_[k]->as<std::uint32_t>();
+    c.low = low_[k].as<std::int32_t>();
+    c.high = high_[k].as<std::int32_t>();
+    c.hysteresis = hysteresis_[k].as<std::uint32_t>();
     const bool inside = c.update(x);
     const auto bit = static_cast<std::uint8_t>(1u << k);
     if ((enabled & bit) && (inside != ((inverted & bit) != 0))) state |= bit;
   }
-  publish(*state_, state);
+  state_.store(state);
   return state;
 }
 

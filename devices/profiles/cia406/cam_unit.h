@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "devices/canopen/object_dictionary.h"
+#include "devices/entry_value.h"
 
 namespace cia406 {
 
@@ -40,10 +41,8 @@ class CamUnit {
 
  private:
   std::array<Cam, kCams> cams_{};
-  canopen::OdEntry* state_ = nullptr;
-  canopen::OdEntry* enable_ = nullptr;
-  canopen::OdEntry* polarity_ = nullptr;
-  std::array<canopen::OdEntry*, kCams> low_{}, high_{}, hysteresis_{};
+  devices::BoundEntry state_, enable_, polarity_;
+  std::array<devices::BoundEntry, kCams> low_{}, high_{}, hysteresis_{};
 };
 
 }  // namespace cia406

@@ -1,6 +1,5 @@
 #include "devices/profiles/cia406/work_area.h"
 
-#include "devices/profiles/cia406/od_value.h"
 
 namespace cia406 {
 
@@ -27,14 +26,14 @@ void WorkArea::add_objects(canopen::ObjectDictionary& od, std::int32_t default_l
 }
 
 void WorkArea::bind(canopen::ObjectDictionary& od) {
-  state_ = od.entry(kState, 1);
-  low_ = od.entry(kLowLimit, 1);
-  high_ = od.entry(kHighLimit, 1);
+  state_ = devices::BoundEntry(od.entry(kState, 1));
+  low_ = devices::BoundEntry(od.entry(kLowLimit, 1));
+  high_ = devices::BoundEntry(od.entry(kHighLimit, 1));
 }
 
 std::uint8_t WorkArea::update(std::int64_t x) {
-  const std::uint8_t s = work_area_state(x, low_->as<std::int32_t>(), high_->as<std::int32_t>());
-  publish(*state_, s);
+  const std::uint8_t s = work_area_state(x, low_.as<std::int32_t>(), high_.as<std::int32_t>());
+  state_.store(s);
   return s;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "devices/canopen/object_dictionary.h"
+#include "devices/entry_value.h"
 
 namespace cia406 {
 
@@ -25,9 +26,7 @@ class WorkArea {
   std::uint8_t update(std::int64_t x);
 
  private:
-  canopen::OdEntry* state_ = nullptr;
-  canopen::OdEntry* low_ = nullptr;
-  canopen::OdEntry* high_ = nullptr;
+  devices::BoundEntry state_, low_, high_;
 };
 
 }  // namespace cia406
