@@ -56,8 +56,11 @@ CircuitSolver::CircuitSolver(std::vector<Component*> components, const Fluid& fl
   friction_limit_.assign(nv, 0.0);
   ode_force_.assign(nv, 0.0);
   held_.assign(nv, 0);
-  for (Eigen::VectorXd* v : {&r_, &r0_, &f_, &k1_, &k2_, &y_, &scale_}) v->setZero(n_);
-  for (Eigen::MatrixXd* m : {&g_, &j_, &w_}) m->setZero(n_, n_);
+  const auto n = static_cast<std::size_t>(n_);
+  for (std::vector<double>* v : {&r_, &r0_, &f_, &k1_, &k2_, &y_, &scale_}) v->assign(n, 0.0);
+  g_.assign(n * n, 0.0);
+  pattern_.assign(n * n, 0);
+  for (std::size_t i = 0; i < n; ++i) pattern_[i * n + i] = 1;
   refresh();
 }
 
@@ -71,19 +74,26 @@ void CircuitSolver::refresh() {
 }
 
 void CircuitSolver::evaluate(const CircuitState& s, Equations::Mode m) {
-  r_.setZero();
+  std::fill(r_.begin(), r_.end(), 0.0);
   if (m == Equations::Mode::Jacobian) {
-    g_.setZero();
+    std::fill(g_.begin(), g_.end(), 0.0);
     std::fill(dry_static_.begin(), dry_static_.end(), 0.0);
     std::fill(dry_kinetic_.begin(), dry_kinetic_.end(), 0.0);
   }
-  Equations eq(s, m, r_, g_, dry_static_, dry_kinetic_, power_);
+  Equations eq(s, m, r_.data(), g_.data(), n_, dry_static_, dry_kinetic_, power_);
+  if (m == Equations::Mode::Jacobian) eq.record_pattern(pattern_, pattern_grew_);
   for (const Component* c : components_) c->stamp(eq);
+  // A coupling seen for the first time (a valve edge opened): the elimination order is chosen
+  // anew for the pattern seen so far (rarely; the entries of a closed edge stay in it).
+  if (pattern_grew_) {
+    lu_.set_pattern(pattern_);
+    pattern_grew_ = false;
+  }
 }
 
 void CircuitSolver::account_power(const CircuitState& s, std::array<double, kEnergyKinds>& power) {
   power.fill(0.0);
-  Equations eq(s, Equations::Mode::Power, r_, g_, dry_static_, dry_kinetic_, power);
+  Equations eq(s, Equations::Mode::Power, r_.data(), g_.data(), n_, dry_static_, dry_kinetic_, power);
   for (const Component* c : components_) c->stamp(eq);
 }
 
@@ -166,7 +176,7 @@ void CircuitSolver::advance(double h, int depth) {
   std::fill(volume_.begin(), volume_.end(), 0.0);
   for (const Component* c : components_) c->add_volumes(stage_, volume_);
   if (accounting_) account_power(state_, power_start_);
-  start_pressure_ = state_.pressure;
+  if (accounting_) start_pressure_ = state_.pressure;
   const double vapour_before = accounting_ ? vapour_volume() : 0.0;
 
   // --- f(y) and J at the start of the step; which constraints are active ---
@@ -174,38 +184,44 @@ void CircuitSolver::advance(double h, int depth) {
   r0_ = r_;
   classify_bodies();
   classify_nodes();
+  // W = I - gamma h J, row by row, straight into the LU's storage. Row i of J is scale_i times row
+  // i of g (dp/dt = beta/V * inflow, dv/dt = force/m); held bodies and cavitating nodes keep their
+  // value (their row of W is the identity's).
+  const auto n = static_cast<std::size_t>(n_);
+  const double minus_gamma_h = -kGamma * h;
+  auto assemble_row = [&](std::size_t row, bool pinned, double diagonal_extra) {
+    double* w = lu_.row(row);
+    if (pinned) {
+      std::fill(w, w + n, 0.0);
+      w[lu_.column(row)] = 1.0;
+      return;
+    }
+    const double* g = &g_[row * n];
+    const double scale = scale_[row];
+    for (std::size_t j = 0; j < n; ++j) w[lu_.column(j)] = minus_gamma_h * (scale * g[j]);
+    w[lu_.column(row)] = minus_gamma_h * (scale * g[row] + diagonal_extra) + 1.0;
+  };
   for (int i = 0; i < np_; ++i) {
     const auto iu = static_cast<std::size_t>(i);
     double slope = 0.0;
     const double beta = fluid_.bulk_modulus(state_.pressure[iu], &slope);
-    scale_[i] = beta / volume_[iu];
-    f_[i] = cavitating_[iu] ? 0.0 : scale_[i] * r_[i];
-    j_.row(i) = scale_[i] * g_.row(i);
+    scale_[iu] = beta / volume_[iu];
+    f_[iu] = cavitating_[iu] ? 0.0 : scale_[iu] * r_[iu];
     // The stiffening of air-laden oil as pressure rises (slope * inflow > 0) is a growing mode;
     // only its damping half belongs in W, or W loses its diagonal dominance at low pressure.
-    j_(i, i) += std::min(slope * r_[i], 0.0) / volume_[iu];
+    assemble_row(iu, cavitating_[iu] != 0, std::min(slope * r_[iu], 0.0) / volume_[iu]);
   }
   for (int b = 0; b < nv_; ++b) {
     const auto bu = static_cast<std::size_t>(b);
-    const int row = np_ + b;
+    const auto row = static_cast<std::size_t>(np_ + b);
     scale_[row] = 1.0 / mass_[bu];
     f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
-    j_.row(row) = scale_[row] * g_.row(row);
+    assemble_row(row, held_[bu] != 0, 0.0);
   }
 
-  // --- ROS2 stages; held bodies and cavitating nodes keep their value (row of W = identity) ---
-  w_.noalias() = (-kGamma * h) * j_;
-  w_.diagonal().array() += 1.0;
-  auto pin = [&](int row) {
-    w_.row(row).setZero();
-    w_(row, row) = 1.0;
-  };
-  for (int i = 0; i < np_; ++i)
-    if (cavitating_[static_cast<std::size_t>(i)]) pin(i);
-  for (int b = 0; b < nv_; ++b)
-    if (held_[static_cast<std::size_t>(b)]) pin(np_ + b);
-  lu_.compute(w_);
-  lu_.solve(f_, k1_);
+  // --- ROS2 stages ---
+  lu_.factor();
+  lu_.solve(f_.data(), k1_.data());
 
   stage_.pressure = state_.pressure;
   stage_.position = state_.position;
@@ -226,9 +242,9 @@ void CircuitSolver::advance(double h, int depth) {
     const int row = np_ + b;
     f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
   }
-  f_ -= 2.0 * k1_;
-  lu_.solve(f_, k2_);
-  y_ = (1.5 * h) * k1_ + (0.5 * h) * k2_;  // increment over the step
+  for (std::size_t i = 0; i < n; ++i) f_[i] -= 2.0 * k1_[i];
+  lu_.solve(f_.data(), k2_.data());
+  for (std::size_t i = 0; i < n; ++i) y_[i] = (1.5 * h) * k1_[i] + (0.5 * h) * k2_[i];  // increment over the step
 
   if (depth < kMaxHalvings && error_norm(h) > 1.0) {
     advance(0.5 * h, depth + 1);
@@ -245,7 +261,10 @@ void CircuitSolver::advance(double h, int depth) {
       const int row = np_ + b;
       if (held_[bu]) {
         // The force at the end of the step (linearised); ODE decides whether it breaks away.
-        ode_force_[bu] = r0_[row] + g_.row(row).dot(y_);
+        const double* g = &g_[static_cast<std::size_t>(row) * n];
+        double dot = g[0] * y_[0];
+        for (std::size_t j = 1; j < n; ++j) dot += g[j] * y_[j];
+        ode_force_[bu] = r0_[row] + dot;
       } else {
         // The force that gives exactly the predicted velocity change once ODE's motor has
         // applied the dry friction.
@@ -272,7 +291,8 @@ void CircuitSolver::advance(double h, int depth) {
     if (dv != 0.0) {
       for (int i = 0; i < np_; ++i) {
         const auto iu = static_cast<std::size_t>(i);
-        const double dp = h * j_(i, row) * dv;
+        const double j_node_body = scale_[iu] * g_[iu * n + static_cast<std::size_t>(row)];  // dp_i/dt per v
+        const double dp = h * j_node_body * dv;
         if (cavitating_[iu]) {
           vapour_[iu] -= dp / scale_[i];
         } else {

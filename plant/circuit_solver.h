@@ -20,8 +20,6 @@
 // friction or an end stop are held at zero velocity in the solve, so both sides agree.
 #pragma once
 
-#include <Eigen/Dense>
-
 #include <cstdint>
 #include <vector>
 
@@ -91,9 +89,13 @@ class CircuitSolver {
   std::array<double, kEnergyKinds> power_{};  // scratch for Residual/Jacobian modes
   std::array<double, kEnergyKinds> power_start_{}, power_end_{};
 
-  Eigen::VectorXd r_, r0_, f_, k1_, k2_, y_, scale_;
-  Eigen::MatrixXd g_, j_, w_;
-  SmallLu lu_;
+  // Per unknown (pressure states, then bodies), allocated once. The system is small and sparse:
+  // plain loops over row-major storage, W assembled straight into the LU's storage.
+  std::vector<double> r_, r0_, f_, k1_, k2_, y_, scale_;
+  std::vector<double> g_;  // n x n row-major: d(residual)/d(state) of the last Jacobian evaluation
+  std::vector<char> pattern_;  // n x n: the entries of g (and so of W) any stamp has written so far
+  bool pattern_grew_ = false;
+  SmallLu lu_;             // holds W = I - gamma h J, then its factors
 
   std::uint64_t steps_taken_ = 0;
   bool accounting_ = false;

@@ -7,10 +7,10 @@
 // So a model's equations are written once and the energy balance cannot drift from them.
 #pragma once
 
-#include <Eigen/Dense>
-
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include "plant/circuit_state.h"
 
@@ -20,10 +20,19 @@ class Equations {
  public:
   enum class Mode { Residual, Jacobian, Power };
 
-  Equations(const CircuitState& state, Mode mode, Eigen::VectorXd& residual, Eigen::MatrixXd& jacobian,
+  /// residual: one entry per unknown (pressure states, then bodies); jacobian: row-major, `unknowns`
+  /// entries per row (the solver's storage, used in place).
+  Equations(const CircuitState& state, Mode mode, double* residual, double* jacobian, int unknowns,
             std::vector<double>& dry_static, std::vector<double>& dry_kinetic, std::array<double, kEnergyKinds>& power)
-      : s_(state), mode_(mode), r_(residual), g_(jacobian), dry_static_(dry_static), dry_kinetic_(dry_kinetic),
-        power_(power) {}
+      : s_(state), mode_(mode), r_(residual), g_(jacobian), n_(static_cast<std::size_t>(unknowns)),
+        dry_static_(dry_static), dry_kinetic_(dry_kinetic), power_(power) {}
+
+  /// In Jacobian mode, also mark each entry of the Jacobian a stamp writes in `pattern` (row-major,
+  /// like the Jacobian), and set `grew` when one was not marked before.
+  void record_pattern(std::vector<char>& pattern, bool& grew) {
+    pattern_ = pattern.data();
+    grew_ = &grew;
+  }
 
   Mode mode() const { return mode_; }
   bool wants_jacobian() const { return mode_ == Mode::Jacobian; }
@@ -44,12 +53,12 @@ class Equations {
     if (ts) r_[to.index] += q;
     if (mode_ == Mode::Jacobian) {
       if (fs) {
-        g_(from.index, from.index) -= dq_ddp;
-        if (ts) g_(from.index, to.index) += dq_ddp;
+        g(from.index, from.index) -= dq_ddp;
+        if (ts) g(from.index, to.index) += dq_ddp;
       }
       if (ts) {
-        g_(to.index, to.index) -= dq_ddp;
-        if (fs) g_(to.index, from.index) += dq_ddp;
+        g(to.index, to.index) -= dq_ddp;
+        if (fs) g(to.index, from.index) += dq_ddp;
       }
     }
   }
@@ -64,8 +73,8 @@ class Equations {
     r_[row] += area * s_.p(node);
     if (mode_ == Mode::Jacobian) {
       if (ns) {
-        g_(node.index, row) -= area;
-        g_(row, node.index) += area;
+        g(node.index, row) -= area;
+        g(row, node.index) += area;
       }
     }
   }
@@ -79,7 +88,7 @@ class Equations {
     }
     const int row = dof_row(dof);
     r_[row] += f;
-    if (mode_ == Mode::Jacobian) g_(row, row) += df_dv;
+    if (mode_ == Mode::Jacobian) g(row, row) += df_dv;
   }
 
   /// Dry (Coulomb/Stribeck) friction on a body: the levels it can hold at rest and while sliding.
@@ -97,11 +106,23 @@ class Equations {
 
   const CircuitState& s_;
   Mode mode_;
-  Eigen::VectorXd& r_;
-  Eigen::MatrixXd& g_;
+  double& g(int row, int column) {
+    const std::size_t i = static_cast<std::size_t>(row) * n_ + static_cast<std::size_t>(column);
+    if (pattern_ != nullptr && pattern_[i] == 0) {
+      pattern_[i] = 1;
+      *grew_ = true;
+    }
+    return g_[i];
+  }
+
+  double* r_;
+  double* g_;
+  std::size_t n_;
   std::vector<double>& dry_static_;
   std::vector<double>& dry_kinetic_;
   std::array<double, kEnergyKinds>& power_;
+  char* pattern_ = nullptr;
+  bool* grew_ = nullptr;
 };
 
 }  // namespace plant
