@@ -47,6 +47,9 @@ CircuitSolver::CircuitSolver(std::vector<Component*> components, const Fluid& fl
   stage_ = state_;
   start_pressure_ = state_.pressure;
   volume_.assign(nodes_u, 0.0);
+  fixed_volume_.assign(nodes_u, 0.0);
+  for (Component* c : components_)
+    if (c->volumes_move()) moving_volumes_.push_back(c);
   vapour_.assign(static_cast<std::size_t>(np_), 0.0);
   cavitating_.assign(static_cast<std::size_t>(np_), 0);
   mass_.assign(nv, 0.0);
@@ -68,9 +71,15 @@ void CircuitSolver::refresh() {
   std::fill(mass_.begin(), mass_.end(), 0.0);
   for (const Component* c : components_) c->add_inertia(mass_);
   for (int b = 0; b < nv_; ++b) world_.set_mass(DofId{b}, mass_[static_cast<std::size_t>(b)]);
+  // Boundary pressures and the volumes that do not move change only with the parameters.
   for (const Component* c : components_) c->fix_pressures(state_);
-  std::fill(volume_.begin(), volume_.end(), 0.0);
-  for (const Component* c : components_) c->add_volumes(state_, volume_);
+  std::fill(fixed_volume_.begin(), fixed_volume_.end(), 0.0);
+  for (const Component* c : components_)
+    if (!c->volumes_move()) c->add_volumes(state_, fixed_volume_);
+  volume_ = fixed_volume_;
+  for (const Component* c : moving_volumes_) c->add_volumes(state_, volume_);
+  air_free_ = fluid_.parameter(Fluid::kAirFraction) <= 0.0;
+  beta_liquid_ = fluid_.bulk_modulus(0.0);
 }
 
 void CircuitSolver::evaluate(const CircuitState& s, Equations::Mode m) {
@@ -166,15 +175,14 @@ void CircuitSolver::step(double h) { advance(h, 0); }
 // the Jacobian did not see (a relief valve opening, a port closing) - two half steps, down to
 // h / 2^kMaxHalvings. Nothing is changed before the step is accepted.
 void CircuitSolver::advance(double h, int depth) {
-  for (const Component* c : components_) c->fix_pressures(state_);
   // Chamber volumes at the step's midpoint position (predicted), so the position-dependent
   // capacitance does not cost the method its second order.
   for (int b = 0; b < nv_; ++b) {
     const auto bu = static_cast<std::size_t>(b);
     stage_.position[bu] = state_.position[bu] + 0.5 * h * state_.velocity[bu];
   }
-  std::fill(volume_.begin(), volume_.end(), 0.0);
-  for (const Component* c : components_) c->add_volumes(stage_, volume_);
+  volume_ = fixed_volume_;
+  for (const Component* c : moving_volumes_) c->add_volumes(stage_, volume_);
   if (accounting_) account_power(state_, power_start_);
   if (accounting_) start_pressure_ = state_.pressure;
   const double vapour_before = accounting_ ? vapour_volume() : 0.0;
@@ -190,21 +198,22 @@ void CircuitSolver::advance(double h, int depth) {
   const auto n = static_cast<std::size_t>(n_);
   const double minus_gamma_h = -kGamma * h;
   auto assemble_row = [&](std::size_t row, bool pinned, double diagonal_extra) {
-    double* w = lu_.row(row);
+    double* const w = lu_.values();
+    const SmallLu::RowSlots slots = lu_.row(row);
     if (pinned) {
-      std::fill(w, w + n, 0.0);
-      w[lu_.column(row)] = 1.0;
+      for (const SmallLu::Slot* e = slots.first; e != slots.last; ++e) w[e->flat] = 0.0;
+      w[slots.diagonal] = 1.0;
       return;
     }
     const double* g = &g_[row * n];
     const double scale = scale_[row];
-    for (std::size_t j = 0; j < n; ++j) w[lu_.column(j)] = minus_gamma_h * (scale * g[j]);
-    w[lu_.column(row)] = minus_gamma_h * (scale * g[row] + diagonal_extra) + 1.0;
+    for (const SmallLu::Slot* e = slots.first; e != slots.last; ++e) w[e->flat] = minus_gamma_h * (scale * g[e->column]);
+    w[slots.diagonal] = minus_gamma_h * (scale * g[row] + diagonal_extra) + 1.0;
   };
   for (int i = 0; i < np_; ++i) {
     const auto iu = static_cast<std::size_t>(i);
     double slope = 0.0;
-    const double beta = fluid_.bulk_modulus(state_.pressure[iu], &slope);
+    const double beta = air_free_ ? beta_liquid_ : fluid_.bulk_modulus(state_.pressure[iu], &slope);
     scale_[iu] = beta / volume_[iu];
     f_[iu] = cavitating_[iu] ? 0.0 : scale_[iu] * r_[iu];
     // The stiffening of air-laden oil as pressure rises (slope * inflow > 0) is a growing mode;
@@ -234,7 +243,7 @@ void CircuitSolver::advance(double h, int depth) {
     if (cavitating_[iu]) {
       f_[i] = 0.0;
     } else {
-      f_[i] = fluid_.bulk_modulus(stage_.pressure[iu]) / volume_[iu] * r_[i];
+      f_[i] = (air_free_ ? beta_liquid_ : fluid_.bulk_modulus(stage_.pressure[iu])) / volume_[iu] * r_[i];
     }
   }
   for (int b = 0; b < nv_; ++b) {

@@ -68,6 +68,7 @@ class CircuitSolver {
   double compression_energy(double volume, double p0, double p1) const;
 
   std::vector<Component*> components_;
+  std::vector<Component*> moving_volumes_;  // the components whose volumes follow body positions
   const Fluid& fluid_;
   RigidBodyWorld& world_;
   int np_;  // pressure states
@@ -77,6 +78,9 @@ class CircuitSolver {
   CircuitState state_;
   CircuitState stage_;
   std::vector<double> volume_;          // per node, m^3
+  std::vector<double> fixed_volume_;    // per node: the part that does not follow body positions, m^3
+  bool air_free_ = false;               // the fluid's bulk modulus is a constant, beta_liquid_
+  double beta_liquid_ = 0.0;
   std::vector<double> vapour_;          // per pressure state: vapour volume of a cavitating node, m^3
   std::vector<char> cavitating_;        // per pressure state, this step
   std::vector<double> start_pressure_;  // pressures at the start of the step

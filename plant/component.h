@@ -57,6 +57,9 @@ class Component {
   virtual void fix_pressures(CircuitState& /*state*/) const {}
   /// Volumes this component adds to its nodes (m^3) at the current body positions.
   virtual void add_volumes(const CircuitState& /*state*/, std::vector<double>& /*node_volume*/) const {}
+  /// Whether those volumes change with body positions (a cylinder's chambers): then add_volumes()
+  /// is called every physics step, else only when the parameters change.
+  virtual bool volumes_move() const { return false; }
   /// Mass (kg) or inertia (kg m^2) this component adds to bodies.
   virtual void add_inertia(std::vector<double>& /*dof_mass*/) const {}
   /// The component's flows and forces at the state the Equations expose.

@@ -27,8 +27,8 @@ class Equations {
       : s_(state), mode_(mode), r_(residual), g_(jacobian), n_(static_cast<std::size_t>(unknowns)),
         dry_static_(dry_static), dry_kinetic_(dry_kinetic), power_(power) {}
 
-  /// In Jacobian mode, also mark each entry of the Jacobian a stamp writes in `pattern` (row-major,
-  /// like the Jacobian), and set `grew` when one was not marked before.
+  /// Jacobian mode needs this: each entry of the Jacobian a stamp writes is marked in `pattern`
+  /// (row-major, like the Jacobian), and `grew` set when one was not marked before.
   void record_pattern(std::vector<char>& pattern, bool& grew) {
     pattern_ = pattern.data();
     grew_ = &grew;
@@ -43,7 +43,7 @@ class Equations {
   double position(DofId d) const { return s_.x(d); }
 
   /// Flow q (m^3/s) from node `from` to node `to`; dq_ddp = dq/d(p_from - p_to).
-  void flow(NodeId from, NodeId to, double q, double dq_ddp, EnergyKind kind) {
+  [[gnu::always_inline]] void flow(NodeId from, NodeId to, double q, double dq_ddp, EnergyKind kind) {
     if (mode_ == Mode::Power) {
       if (kind != EnergyKind::Internal) power_[static_cast<int>(kind)] += (s_.p(from) - s_.p(to)) * q;
       return;
@@ -108,11 +108,13 @@ class Equations {
   Mode mode_;
   double& g(int row, int column) {
     const std::size_t i = static_cast<std::size_t>(row) * n_ + static_cast<std::size_t>(column);
-    if (pattern_ != nullptr && pattern_[i] == 0) {
-      pattern_[i] = 1;
-      *grew_ = true;
-    }
+    if (pattern_[i] == 0) [[unlikely]]
+      mark(i);
     return g_[i];
+  }
+  [[gnu::noinline]] void mark(std::size_t i) {
+    pattern_[i] = 1;
+    *grew_ = true;
   }
 
   double* r_;

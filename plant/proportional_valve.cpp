@@ -107,11 +107,16 @@ void ProportionalValve::advance(double /*h*/) {
 void ProportionalValve::stamp_edge(Equations& eq, int from, int to, double open) const {
   const NodeId a = node(from), b = node(to);
   const double dp = eq.pressure(a) - eq.pressure(b);
+  const double c = parameter(kLeakageCoefficient);
   if (open > 0.0) {
     const auto f = orifice_flow(kv_ * open, dp, parameter(kTransitionPressure));
+    if (eq.mode() != Equations::Mode::Power) {
+      // One stamp for both flows of the edge (the energy balance needs them apart).
+      eq.flow(a, b, f.q + c * dp, f.dq_ddp + c, EnergyKind::Throttling);
+      return;
+    }
     eq.flow(a, b, f.q, f.dq_ddp, EnergyKind::Throttling);
   }
-  const double c = parameter(kLeakageCoefficient);
   if (c > 0.0) eq.flow(a, b, c * dp, c, EnergyKind::Leakage);
 }
 

@@ -188,11 +188,13 @@ void RigidBodyWorld::step(double h, std::span<const double> force, std::span<con
   // solution: the motor force that would bring the body to rest within the step, clamped to the
   // friction limit. Held (not clamped): the body stays at rest, v1 = 0 - a resting body, which ODE
   // need not step. Clamped: the body slides on under the constant force -limit sign(v), and ODE's
-  // step reduces to v1 = v0 + h (F + lambda) / m. Both are done here; cases within a margin of the
-  // limit, and bodies on or at a stop (limit rows, the motor's behaviour there), are ODE's. Bodies
-  // not stepped by ODE are disabled for that step so that it skips their islands, and their ODE
-  // copy is brought up to date only when ODE steps them next (docs/plant.md, "Which bodies ODE
-  // steps").
+  // step reduces to v1 = v0 + h (F + lambda) / m. On a stop, the limit row joins in: when the
+  // force pushes the body into the stop, or the motor can hold it, the body stays where it is
+  // (v1 = 0, the stop and the motor share the force, neither does work) - a body at rest on its
+  // stop, which ODE need not step either. All three are done here; cases within a margin of the
+  // limit, and a body leaving its stop, are ODE's. Bodies not stepped by ODE are disabled for that
+  // step so that it skips their islands, and their ODE copy is brought up to date only when ODE
+  // steps them next (docs/plant.md, "Which bodies ODE steps").
   bool any_in_ode = false;
   for (std::size_t i = 0; i < dofs_.size(); ++i) {
     Dof& d = *dofs_[i];
@@ -200,13 +202,23 @@ void RigidBodyWorld::step(double h, std::span<const double> force, std::span<con
     const double stop_force = -d.mass * d.velocity / h - force[i];
     // ODE's own test of a slider's stops (at the start of the step), on the joint position ODE
     // would measure.
-    const bool clear = !d.slider || (d.joint_position > d.lower && d.joint_position < d.upper);
-    const bool slides = std::abs(stop_force) > limit * (1.0 + kSaturationMargin);
-    const bool holds = std::abs(stop_force) < limit * (1.0 - kSaturationMargin);
-    d.closed_form = clear && (slides || holds);
-    if (d.closed_form) {
+    const bool on_lower = d.slider && d.joint_position <= d.lower;
+    const bool on_upper = d.slider && !on_lower && d.joint_position >= d.upper;
+    const double below = limit * (1.0 - kSaturationMargin);
+    if (on_lower || on_upper) {
+      // Held on the stop: lambda pushes into it (the stop can take any part of it), or the motor
+      // can supply it.
+      d.closed_form = on_lower ? stop_force > -below : stop_force < below;
+      d.resting = true;
+      d.motor_force = 0.0;
+    } else {
+      const bool slides = std::abs(stop_force) > limit * (1.0 + kSaturationMargin);
+      const bool holds = std::abs(stop_force) < below;
+      d.closed_form = slides || holds;
       d.resting = holds;
       d.motor_force = holds ? stop_force : stop_force > 0.0 ? limit : -limit;
+    }
+    if (d.closed_form) {
       if (d.enabled) {
         dBodyDisable(d.body);
         d.enabled = false;

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace plant {
@@ -34,6 +35,12 @@ class SmallLu {
         order_(n_, 0),
         later_start_(n_ + 1, 0),
         later_(n_ * n_, 0),
+        column_start_(n_ + 1, 0),
+        below_(n_ * n_),
+        right_(n_ * n_),
+        updates_(n_ * n_ * n_ / 3 + n_),
+        row_start_(n_ + 1, 0),
+        row_slots_(n_ * n_),
         y_(n_, 0.0),
         adjacent_(n_ * n_, 0),
         eliminated_(n_, 0) {
@@ -42,10 +49,21 @@ class SmallLu {
     set_pattern(diagonal);
   }
 
-  /// Row `r` of W (in the solver's numbering) for assembly: its entry for column c is
-  /// row(r)[column(c)]. Every entry of the row must be written before factor().
-  double* row(std::size_t r) { return &lu_[position_[r] * n_]; }
-  std::size_t column(std::size_t c) const { return position_[c]; }
+  /// Where row r of W (in the solver's numbering) is stored: its diagonal entry at values()[diagonal],
+  /// and the off-diagonal entries the factors use at values()[flat], for each {column, flat} in
+  /// [first, last). Before factor(), all of them must be written; W's other entries are zero.
+  struct Slot {
+    std::uint32_t column, flat;
+  };
+  struct RowSlots {
+    const Slot* first;
+    const Slot* last;
+    std::size_t diagonal;
+  };
+  RowSlots row(std::size_t r) const {
+    return {&row_slots_[row_start_[r]], &row_slots_[row_start_[r + 1]], position_[r] * (n_ + 1)};
+  }
+  double* values() { return lu_.data(); }
 
   /// The entries of W that can be nonzero (row-major, n x n; nonzero = may be nonzero): chooses
   /// the elimination order and the factors' pattern. Entries outside it must be zero in every W
@@ -86,22 +104,43 @@ class SmallLu {
         if (adjacent_[order_[k] * n + order_[m]]) later_[next++] = m;
     }
     later_start_[n] = next;
+    // The same as flat indices into lu_, so that factor() and solve() are straight runs over them.
+    std::size_t update = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      column_start_[k] = later_start_[k];
+      for (std::size_t e = later_start_[k]; e < later_start_[k + 1]; ++e) {
+        const std::size_t m = later_[e];
+        below_[e] = {index(m), index(m * n + k), update, 0};
+        right_[e] = {index(m), index(k * n + m), 0, 0};
+        for (std::size_t f = later_start_[k]; f < later_start_[k + 1]; ++f)
+          updates_[update++] = {index(m * n + later_[f]), index(k * n + later_[f])};
+        below_[e].updates_end = update;
+      }
+    }
+    column_start_[n] = later_start_[n];
+    next = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+      row_start_[r] = next;
+      for (std::size_t c = 0; c < n; ++c)
+        if (adjacent_[r * n + c]) row_slots_[next++] = {index(c), index(position_[r] * n + position_[c])};
+    }
+    row_start_[n] = next;
   }
 
   void factor() {
     const std::size_t n = n_;
     double* const lu = lu_.data();
+    const Entry* const below = below_.data();
+    const Update* const updates = updates_.data();
     for (std::size_t k = 0; k < n; ++k) {
       const double d = lu[k * n + k];
-      const std::size_t* const first = &later_[later_start_[k]];
-      const std::size_t* const last = &later_[later_start_[k + 1]];
-      const double* row_k = &lu[k * n];
-      for (const std::size_t* i = first; i != last; ++i) {
-        double* row_i = &lu[*i * n];
-        if (row_i[k] == 0.0) continue;  // e.g. a pinned row
-        const double l = row_i[k] / d;
-        row_i[k] = l;
-        for (const std::size_t* j = first; j != last; ++j) row_i[*j] -= l * row_k[*j];
+      for (std::size_t e = column_start_[k]; e < column_start_[k + 1]; ++e) {
+        double& entry = lu[below[e].flat];
+        if (entry == 0.0) continue;  // e.g. a pinned row
+        const double l = entry / d;
+        entry = l;
+        for (std::size_t u = below[e].updates_begin; u < below[e].updates_end; ++u)
+          lu[updates[u].target] -= l * lu[updates[u].source];
       }
     }
   }
@@ -112,16 +151,17 @@ class SmallLu {
     const std::size_t n = n_;
     const double* const lu = lu_.data();
     double* const y = y_.data();  // in elimination order
+    const Entry* const below = below_.data();
+    const Entry* const right = right_.data();
     for (std::size_t k = 0; k < n; ++k) y[k] = b[order_[k]];
     for (std::size_t k = 0; k < n; ++k) {
       const double yk = y[k];
-      for (std::size_t e = later_start_[k]; e < later_start_[k + 1]; ++e) y[later_[e]] -= lu[later_[e] * n + k] * yk;
+      for (std::size_t e = column_start_[k]; e < column_start_[k + 1]; ++e) y[below[e].unknown] -= lu[below[e].flat] * yk;
     }
     for (std::size_t k = n; k-- > 0;) {
       double s = y[k];
-      const double* row = &lu[k * n];
-      for (std::size_t e = later_start_[k]; e < later_start_[k + 1]; ++e) s -= row[later_[e]] * y[later_[e]];
-      y[k] = s / row[k];
+      for (std::size_t e = column_start_[k]; e < column_start_[k + 1]; ++e) s -= lu[right[e].flat] * y[right[e].unknown];
+      y[k] = s / lu[k * n + k];
     }
     for (std::size_t k = 0; k < n; ++k) x[order_[k]] = y[k];
   }
@@ -131,7 +171,23 @@ class SmallLu {
   std::vector<double> lu_;             // row-major, elimination order: U on and above the diagonal, L below
   std::vector<std::size_t> position_;  // solver's unknown -> elimination position
   std::vector<std::size_t> order_;     // elimination position -> solver's unknown
+  static std::uint32_t index(std::size_t i) { return static_cast<std::uint32_t>(i); }
+  // An entry of the factors next to the diagonal: L's below position k (row `unknown`), or U's right
+  // of it (column `unknown`); for L's, the range of updates_ its row takes in the elimination.
+  struct Entry {
+    std::uint32_t unknown, flat;
+    std::size_t updates_begin, updates_end;
+  };
+  struct Update {
+    std::uint32_t target, source;  // lu[target] -= l * lu[source]
+  };
+
   std::vector<std::size_t> later_start_, later_;  // per position: the later positions coupled to it
+  std::vector<std::size_t> column_start_;         // per position: its range of below_ and right_
+  std::vector<Entry> below_, right_;
+  std::vector<Update> updates_;
+  std::vector<std::size_t> row_start_;  // per unknown (solver's numbering): its range of row_slots_
+  std::vector<Slot> row_slots_;
   std::vector<double> y_;                         // the solve's scratch
   std::vector<char> adjacent_, eliminated_;       // set_pattern()'s scratch
 };
