@@ -33,15 +33,11 @@ class SmallLu {
         lu_(n_ * n_, 0.0),
         position_(n_, 0),
         order_(n_, 0),
-        later_start_(n_ + 1, 0),
-        later_(n_ * n_, 0),
-        column_start_(n_ + 1, 0),
-        below_(n_ * n_),
-        right_(n_ * n_),
+        eliminations_(n_ * n_),
         updates_(n_ * n_ * n_ / 3 + n_),
+        substitutions_(2 * n_ * n_ + n_),
         row_start_(n_ + 1, 0),
         row_slots_(n_ * n_),
-        y_(n_, 0.0),
         adjacent_(n_ * n_, 0),
         eliminated_(n_, 0) {
     std::vector<char> diagonal(n_ * n_, 0);
@@ -66,8 +62,8 @@ class SmallLu {
   double* values() { return lu_.data(); }
 
   /// The entries of W that can be nonzero (row-major, n x n; nonzero = may be nonzero): chooses
-  /// the elimination order and the factors' pattern. Entries outside it must be zero in every W
-  /// assembled afterwards. Does not allocate.
+  /// the elimination order and the factors' pattern, and lays out factor() and solve() as runs
+  /// over it. Entries outside it must be zero in every W assembled afterwards. Does not allocate.
   void set_pattern(const std::vector<char>& pattern) {
     const std::size_t n = n_;
     for (std::size_t i = 0; i < n; ++i)
@@ -95,30 +91,33 @@ class SmallLu {
           if (b != a && !eliminated_[b] && adjacent_[best * n + b]) adjacent_[a * n + b] = 1;
       }
     }
-    // Per elimination position k: the later positions coupled to it (filled pattern), which are
-    // both the rows below the pivot with an entry in column k and the columns right of it in row k.
-    std::size_t next = 0;
+    // adjacent_ is now the factors' (symmetric) pattern. For position k, the later positions m
+    // coupled to it are both the rows below the pivot with an entry in column k (L) and the
+    // columns right of it in row k (U).
+    auto later = [&](std::size_t k, std::size_t m) { return m > k && adjacent_[order_[k] * n + order_[m]] != 0; };
+    std::size_t elimination = 0, update = 0, substitution = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      later_start_[k] = next;
-      for (std::size_t m = k + 1; m < n; ++m)
-        if (adjacent_[order_[k] * n + order_[m]]) later_[next++] = m;
-    }
-    later_start_[n] = next;
-    // The same as flat indices into lu_, so that factor() and solve() are straight runs over them.
-    std::size_t update = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      column_start_[k] = later_start_[k];
-      for (std::size_t e = later_start_[k]; e < later_start_[k + 1]; ++e) {
-        const std::size_t m = later_[e];
-        below_[e] = {index(m), index(m * n + k), update, 0};
-        right_[e] = {index(m), index(k * n + m), 0, 0};
-        for (std::size_t f = later_start_[k]; f < later_start_[k + 1]; ++f)
-          updates_[update++] = {index(m * n + later_[f]), index(k * n + later_[f])};
-        below_[e].updates_end = update;
+      for (std::size_t m = k + 1; m < n; ++m) {
+        if (!later(k, m)) continue;
+        const std::size_t first = update;
+        for (std::size_t j = k + 1; j < n; ++j)
+          if (later(k, j)) updates_[update++] = {index(m * n + j), index(k * n + j)};
+        eliminations_[elimination++] = {index(m * n + k), index(k * n + k), first, update};
       }
     }
-    column_start_[n] = later_start_[n];
-    next = 0;
+    eliminations_end_ = elimination;
+    // Forward substitution (L, unit diagonal) in the solver's numbering: x[m] -= L(m,k) x[k].
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t m = k + 1; m < n; ++m)
+        if (later(k, m)) substitutions_[substitution++] = {index(order_[m]), index(order_[k]), index(m * n + k), false};
+    // Backward substitution (U): x[k] -= U(k,m) x[m] for the later m, then x[k] /= U(k,k).
+    for (std::size_t k = n; k-- > 0;) {
+      for (std::size_t m = k + 1; m < n; ++m)
+        if (later(k, m)) substitutions_[substitution++] = {index(order_[k]), index(order_[m]), index(k * n + m), false};
+      substitutions_[substitution++] = {index(order_[k]), index(order_[k]), index(k * n + k), true};
+    }
+    substitutions_end_ = substitution;
+    std::size_t next = 0;
     for (std::size_t r = 0; r < n; ++r) {
       row_start_[r] = next;
       for (std::size_t c = 0; c < n; ++c)
@@ -128,68 +127,58 @@ class SmallLu {
   }
 
   void factor() {
-    const std::size_t n = n_;
     double* const lu = lu_.data();
-    const Entry* const below = below_.data();
     const Update* const updates = updates_.data();
-    for (std::size_t k = 0; k < n; ++k) {
-      const double d = lu[k * n + k];
-      for (std::size_t e = column_start_[k]; e < column_start_[k + 1]; ++e) {
-        double& entry = lu[below[e].flat];
-        if (entry == 0.0) continue;  // e.g. a pinned row
-        const double l = entry / d;
-        entry = l;
-        for (std::size_t u = below[e].updates_begin; u < below[e].updates_end; ++u)
-          lu[updates[u].target] -= l * lu[updates[u].source];
-      }
+    for (const Elimination* e = eliminations_.data(); e != eliminations_.data() + eliminations_end_; ++e) {
+      double& entry = lu[e->below];
+      if (entry == 0.0) continue;  // e.g. a pinned row
+      const double l = entry / lu[e->pivot];
+      entry = l;
+      for (std::size_t u = e->updates_begin; u < e->updates_end; ++u) lu[updates[u].target] -= l * lu[updates[u].source];
     }
   }
 
   /// x = W^-1 b for the W of the last factor(), both in the solver's numbering; x and b may not
   /// alias.
-  void solve(const double* b, double* x) {
-    const std::size_t n = n_;
+  void solve(const double* b, double* x) const {
     const double* const lu = lu_.data();
-    double* const y = y_.data();  // in elimination order
-    const Entry* const below = below_.data();
-    const Entry* const right = right_.data();
-    for (std::size_t k = 0; k < n; ++k) y[k] = b[order_[k]];
-    for (std::size_t k = 0; k < n; ++k) {
-      const double yk = y[k];
-      for (std::size_t e = column_start_[k]; e < column_start_[k + 1]; ++e) y[below[e].unknown] -= lu[below[e].flat] * yk;
+    std::copy(b, b + n_, x);
+    for (const Substitution* s = substitutions_.data(); s != substitutions_.data() + substitutions_end_; ++s) {
+      if (s->divide) {
+        x[s->target] /= lu[s->flat];
+      } else {
+        x[s->target] -= lu[s->flat] * x[s->source];
+      }
     }
-    for (std::size_t k = n; k-- > 0;) {
-      double s = y[k];
-      for (std::size_t e = column_start_[k]; e < column_start_[k + 1]; ++e) s -= lu[right[e].flat] * y[right[e].unknown];
-      y[k] = s / lu[k * n + k];
-    }
-    for (std::size_t k = 0; k < n; ++k) x[order_[k]] = y[k];
   }
 
  private:
-  std::size_t n_;
-  std::vector<double> lu_;             // row-major, elimination order: U on and above the diagonal, L below
-  std::vector<std::size_t> position_;  // solver's unknown -> elimination position
-  std::vector<std::size_t> order_;     // elimination position -> solver's unknown
   static std::uint32_t index(std::size_t i) { return static_cast<std::uint32_t>(i); }
-  // An entry of the factors next to the diagonal: L's below position k (row `unknown`), or U's right
-  // of it (column `unknown`); for L's, the range of updates_ its row takes in the elimination.
-  struct Entry {
-    std::uint32_t unknown, flat;
+  // One column entry of L: lu[below] /= lu[pivot], then that row's updates.
+  struct Elimination {
+    std::uint32_t below, pivot;
     std::size_t updates_begin, updates_end;
   };
   struct Update {
     std::uint32_t target, source;  // lu[target] -= l * lu[source]
   };
+  struct Substitution {
+    std::uint32_t target, source, flat;  // x[target] -= lu[flat] * x[source], or x[target] /= lu[flat]
+    bool divide;
+  };
 
-  std::vector<std::size_t> later_start_, later_;  // per position: the later positions coupled to it
-  std::vector<std::size_t> column_start_;         // per position: its range of below_ and right_
-  std::vector<Entry> below_, right_;
+  std::size_t n_;
+  std::vector<double> lu_;             // row-major, elimination order: U on and above the diagonal, L below
+  std::vector<std::size_t> position_;  // solver's unknown -> elimination position
+  std::vector<std::size_t> order_;     // elimination position -> solver's unknown
+  std::vector<Elimination> eliminations_;
+  std::size_t eliminations_end_ = 0;
   std::vector<Update> updates_;
+  std::vector<Substitution> substitutions_;
+  std::size_t substitutions_end_ = 0;
   std::vector<std::size_t> row_start_;  // per unknown (solver's numbering): its range of row_slots_
   std::vector<Slot> row_slots_;
-  std::vector<double> y_;                         // the solve's scratch
-  std::vector<char> adjacent_, eliminated_;       // set_pattern()'s scratch
+  std::vector<char> adjacent_, eliminated_;  // set_pattern()'s scratch
 };
 
 }  // namespace plant
