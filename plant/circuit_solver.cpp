@@ -48,8 +48,10 @@ CircuitSolver::CircuitSolver(std::vector<Component*> components, const Fluid& fl
   start_pressure_ = state_.pressure;
   volume_.assign(nodes_u, 0.0);
   fixed_volume_.assign(nodes_u, 0.0);
-  for (Component* c : components_)
+  for (Component* c : components_) {
     if (c->volumes_move()) moving_volumes_.push_back(c);
+    if (c->uses(Component::kStamps)) stamping_.push_back(c);
+  }
   vapour_.assign(static_cast<std::size_t>(np_), 0.0);
   cavitating_.assign(static_cast<std::size_t>(np_), 0);
   mass_.assign(nv, 0.0);
@@ -91,7 +93,7 @@ void CircuitSolver::evaluate(const CircuitState& s, Equations::Mode m) {
   }
   Equations eq(s, m, r_.data(), g_.data(), n_, dry_static_, dry_kinetic_, power_);
   if (m == Equations::Mode::Jacobian) eq.record_pattern(pattern_, pattern_grew_);
-  for (const Component* c : components_) c->stamp(eq);
+  for (const Component* c : stamping_) c->stamp(eq);
   // A coupling seen for the first time (a valve edge opened): the elimination order is chosen
   // anew for the pattern seen so far (rarely; the entries of a closed edge stay in it).
   if (pattern_grew_) {
@@ -103,7 +105,7 @@ void CircuitSolver::evaluate(const CircuitState& s, Equations::Mode m) {
 void CircuitSolver::account_power(const CircuitState& s, std::array<double, kEnergyKinds>& power) {
   power.fill(0.0);
   Equations eq(s, Equations::Mode::Power, r_.data(), g_.data(), n_, dry_static_, dry_kinetic_, power);
-  for (const Component* c : components_) c->stamp(eq);
+  for (const Component* c : stamping_) c->stamp(eq);
 }
 
 double CircuitSolver::kinetic_energy() const {

@@ -69,6 +69,7 @@ class CircuitSolver {
 
   std::vector<Component*> components_;
   std::vector<Component*> moving_volumes_;  // the components whose volumes follow body positions
+  std::vector<Component*> stamping_;        // the components that stamp (Component::uses())
   const Fluid& fluid_;
   RigidBodyWorld& world_;
   int np_;  // pressure states

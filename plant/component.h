@@ -46,6 +46,12 @@ class Component {
   virtual DofId body(int /*connector*/) const { return {}; }
 
   // --- Stepping (called by the plant, in this order) ---
+  /// The per-step calls below that a component implements: the plant makes only those (a dozen
+  /// empty virtual calls per step add up at thousands of steps per second). All, unless a
+  /// derived constructor says fewer with declare_hooks().
+  enum Hook : unsigned { kReadsInputs = 1u, kAdvances = 2u, kStamps = 4u, kPublishes = 8u };
+  bool uses(Hook hook) const { return (hooks_ & hook) != 0; }
+
   /// Once per tick: copy input ports into internal commands (inputs hold their last value).
   virtual void read_inputs() {}
   /// When the physics step size h is first known or changes: exact discretisations.
@@ -75,6 +81,9 @@ class Component {
   /// Called by set_parameter() after every accepted change (and by each derived constructor):
   /// recompute derived quantities.
   virtual void parameters_changed() {}
+  /// Declares the per-step hooks this component implements (a mask of Hook); a hook left out is
+  /// never called.
+  void declare_hooks(unsigned hooks) { hooks_ = hooks; }
 
  private:
   const ComponentType& type_;
@@ -82,6 +91,7 @@ class Component {
   std::vector<double> values_;
   std::vector<double> signals_;
   std::vector<int> targets_;
+  unsigned hooks_ = kReadsInputs | kAdvances | kStamps | kPublishes;
 };
 
 /// The factory a ComponentType points at: `ComponentType{..., make_component<Tank>}`.

@@ -66,6 +66,7 @@ const ComponentType& DifferentialCylinder::type_info() { return kType; }
 
 DifferentialCylinder::DifferentialCylinder(std::string name, std::vector<double> values)
     : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(kStamps | kPublishes);
   parameters_changed();
 }
 
