@@ -58,7 +58,7 @@ class CircuitSolver {
   void evaluate(const CircuitState& s, Equations::Mode mode);
   void account_power(const CircuitState& s, std::array<double, kEnergyKinds>& power);
   void advance(double h, int depth);
-  double error_norm(double h) const;
+  bool error_too_large(double h) const;
   void classify_bodies();
   void classify_nodes();
   void settle_vapour();
@@ -86,6 +86,7 @@ class CircuitSolver {
   std::vector<char> cavitating_;        // per pressure state, this step
   std::vector<double> start_pressure_;  // pressures at the start of the step
   std::vector<double> mass_;    // per body
+  std::vector<double> inverse_mass_;
   std::vector<double> dry_static_, dry_kinetic_;
   std::vector<double> friction_;        // dry friction force used in the solve, per body
   std::vector<double> friction_limit_;  // force limit handed to ODE, per body

@@ -34,6 +34,8 @@ class SmallLu {
         position_(n_, 0),
         order_(n_, 0),
         eliminations_(n_ * n_),
+        elimination_end_(n_, 0),
+        inverse_pivot_(n_, 0.0),
         updates_(n_ * n_ * n_ / 3 + n_),
         substitutions_(2 * n_ * n_ + n_),
         row_start_(n_ + 1, 0),
@@ -102,10 +104,10 @@ class SmallLu {
         const std::size_t first = update;
         for (std::size_t j = k + 1; j < n; ++j)
           if (later(k, j)) updates_[update++] = {index(m * n + j), index(k * n + j)};
-        eliminations_[elimination++] = {index(m * n + k), index(k * n + k), first, update};
+        eliminations_[elimination++] = {index(m * n + k), first, update};
       }
+      elimination_end_[k] = elimination;
     }
-    eliminations_end_ = elimination;
     // Forward substitution (L, unit diagonal) in the solver's numbering: x[m] -= L(m,k) x[k].
     for (std::size_t k = 0; k < n; ++k)
       for (std::size_t m = k + 1; m < n; ++m)
@@ -114,7 +116,7 @@ class SmallLu {
     for (std::size_t k = n; k-- > 0;) {
       for (std::size_t m = k + 1; m < n; ++m)
         if (later(k, m)) substitutions_[substitution++] = {index(order_[k]), index(order_[m]), index(k * n + m), false};
-      substitutions_[substitution++] = {index(order_[k]), index(order_[k]), index(k * n + k), true};
+      substitutions_[substitution++] = {index(order_[k]), index(k), 0, true};
     }
     substitutions_end_ = substitution;
     std::size_t next = 0;
@@ -127,14 +129,20 @@ class SmallLu {
   }
 
   void factor() {
+    const std::size_t n = n_;
     double* const lu = lu_.data();
     const Update* const updates = updates_.data();
-    for (const Elimination* e = eliminations_.data(); e != eliminations_.data() + eliminations_end_; ++e) {
-      double& entry = lu[e->below];
-      if (entry == 0.0) continue;  // e.g. a pinned row
-      const double l = entry / lu[e->pivot];
-      entry = l;
-      for (std::size_t u = e->updates_begin; u < e->updates_end; ++u) lu[updates[u].target] -= l * lu[updates[u].source];
+    const Elimination* e = eliminations_.data();
+    for (std::size_t k = 0; k < n; ++k) {
+      const double inverse = 1.0 / lu[k * (n + 1)];
+      inverse_pivot_[k] = inverse;
+      for (const Elimination* last = eliminations_.data() + elimination_end_[k]; e != last; ++e) {
+        double& entry = lu[e->below];
+        if (entry == 0.0) continue;  // e.g. a pinned row
+        const double l = entry * inverse;
+        entry = l;
+        for (std::size_t u = e->updates_begin; u < e->updates_end; ++u) lu[updates[u].target] -= l * lu[updates[u].source];
+      }
     }
   }
 
@@ -145,7 +153,7 @@ class SmallLu {
     std::copy(b, b + n_, x);
     for (const Substitution* s = substitutions_.data(); s != substitutions_.data() + substitutions_end_; ++s) {
       if (s->divide) {
-        x[s->target] /= lu[s->flat];
+        x[s->target] *= inverse_pivot_[s->source];
       } else {
         x[s->target] -= lu[s->flat] * x[s->source];
       }
@@ -154,16 +162,16 @@ class SmallLu {
 
  private:
   static std::uint32_t index(std::size_t i) { return static_cast<std::uint32_t>(i); }
-  // One column entry of L: lu[below] /= lu[pivot], then that row's updates.
+  // One column entry of L: lu[below] /= the pivot, then that row's updates.
   struct Elimination {
-    std::uint32_t below, pivot;
+    std::uint32_t below;
     std::size_t updates_begin, updates_end;
   };
   struct Update {
     std::uint32_t target, source;  // lu[target] -= l * lu[source]
   };
   struct Substitution {
-    std::uint32_t target, source, flat;  // x[target] -= lu[flat] * x[source], or x[target] /= lu[flat]
+    std::uint32_t target, source, flat;  // x[target] -= lu[flat] * x[source], or x[target] /= pivot `source`
     bool divide;
   };
 
@@ -172,7 +180,8 @@ class SmallLu {
   std::vector<std::size_t> position_;  // solver's unknown -> elimination position
   std::vector<std::size_t> order_;     // elimination position -> solver's unknown
   std::vector<Elimination> eliminations_;
-  std::size_t eliminations_end_ = 0;
+  std::vector<std::size_t> elimination_end_;  // per position k: the end of its column's eliminations
+  std::vector<double> inverse_pivot_;         // per position, from the last factor()
   std::vector<Update> updates_;
   std::vector<Substitution> substitutions_;
   std::size_t substitutions_end_ = 0;
