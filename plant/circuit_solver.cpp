@@ -185,7 +185,7 @@ void CircuitSolver::advance(double h, int depth) {
     const auto bu = static_cast<std::size_t>(b);
     stage_.position[bu] = state_.position[bu] + 0.5 * h * state_.velocity[bu];
   }
-  volume_ = fixed_volume_;
+  std::copy(fixed_volume_.begin(), fixed_volume_.end(), volume_.begin());
   for (const Component* c : moving_volumes_) c->add_volumes(stage_, volume_);
   if (accounting_) account_power(state_, power_start_);
   if (accounting_) start_pressure_ = state_.pressure;
@@ -193,7 +193,7 @@ void CircuitSolver::advance(double h, int depth) {
 
   // --- f(y) and J at the start of the step; which constraints are active ---
   evaluate(state_, Equations::Mode::Jacobian);
-  r0_ = r_;
+  std::copy(r_.begin(), r_.end(), r0_.begin());
   classify_bodies();
   classify_nodes();
   // W = I - gamma h J, row by row, straight into the LU's storage. Row i of J is scale_i times row
@@ -236,8 +236,8 @@ void CircuitSolver::advance(double h, int depth) {
   lu_.factor();
   lu_.solve(f_.data(), k1_.data());
 
-  stage_.pressure = state_.pressure;
-  stage_.position = state_.position;
+  std::copy(state_.pressure.begin(), state_.pressure.end(), stage_.pressure.begin());
+  std::copy(state_.position.begin(), state_.position.end(), stage_.position.begin());
   for (int i = 0; i < np_; ++i) stage_.pressure[static_cast<std::size_t>(i)] += h * k1_[i];
   for (int b = 0; b < nv_; ++b)
     stage_.velocity[static_cast<std::size_t>(b)] = state_.velocity[static_cast<std::size_t>(b)] + h * k1_[np_ + b];

@@ -65,7 +65,7 @@ class Equations {
 
   /// A body that changes the volume of `node` by `area` per unit of its coordinate (m^2, or
   /// m^3/rad for a motor): the node loses area*v of inflow and the body feels area*p.
-  void displacement(NodeId node, DofId dof, double area) {
+  [[gnu::always_inline]] void displacement(NodeId node, DofId dof, double area) {
     if (mode_ == Mode::Power) return;  // conversion between fluid and mechanics, not a loss
     const int row = dof_row(dof);
     const bool ns = is_state(node);
@@ -81,7 +81,7 @@ class Equations {
 
   /// Force (or torque) f on a body that depends on pressures only through stamps above;
   /// df_dv = df/dv of the same body.
-  void force(DofId dof, double f, double df_dv, EnergyKind kind) {
+  [[gnu::always_inline]] void force(DofId dof, double f, double df_dv, EnergyKind kind) {
     if (mode_ == Mode::Power) {
       if (kind != EnergyKind::Internal) power_[static_cast<int>(kind)] -= f * s_.v(dof);
       return;
