@@ -47,17 +47,26 @@ CircuitSolver::CircuitSolver(std::vector<Component*> components, const Fluid& fl
   stage_ = state_;
   start_pressure_ = state_.pressure;
   volume_.assign(nodes_u, 0.0);
+  fixed_volume_.assign(nodes_u, 0.0);
+  for (Component* c : components_) {
+    if (c->volumes_move()) moving_volumes_.push_back(c);
+    if (c->uses(Component::kStamps)) stamping_.push_back(c);
+  }
   vapour_.assign(static_cast<std::size_t>(np_), 0.0);
   cavitating_.assign(static_cast<std::size_t>(np_), 0);
   mass_.assign(nv, 0.0);
+  inverse_mass_.assign(nv, 0.0);
   dry_static_.assign(nv, 0.0);
   dry_kinetic_.assign(nv, 0.0);
   friction_.assign(nv, 0.0);
   friction_limit_.assign(nv, 0.0);
   ode_force_.assign(nv, 0.0);
   held_.assign(nv, 0);
-  for (Eigen::VectorXd* v : {&r_, &r0_, &f_, &k1_, &k2_, &y_, &scale_}) v->setZero(n_);
-  for (Eigen::MatrixXd* m : {&g_, &j_, &w_}) m->setZero(n_, n_);
+  const auto n = static_cast<std::size_t>(n_);
+  for (std::vector<double>* v : {&r_, &r0_, &f_, &k1_, &k2_, &y_, &scale_}) v->assign(n, 0.0);
+  g_.assign(n * n, 0.0);
+  pattern_.assign(n * n, 0);
+  for (std::size_t i = 0; i < n; ++i) pattern_[i * n + i] = 1;
   refresh();
 }
 
@@ -65,26 +74,40 @@ void CircuitSolver::refresh() {
   std::fill(mass_.begin(), mass_.end(), 0.0);
   for (const Component* c : components_) c->add_inertia(mass_);
   for (int b = 0; b < nv_; ++b) world_.set_mass(DofId{b}, mass_[static_cast<std::size_t>(b)]);
+  for (std::size_t b = 0; b < mass_.size(); ++b) inverse_mass_[b] = 1.0 / mass_[b];
+  // Boundary pressures and the volumes that do not move change only with the parameters.
   for (const Component* c : components_) c->fix_pressures(state_);
-  std::fill(volume_.begin(), volume_.end(), 0.0);
-  for (const Component* c : components_) c->add_volumes(state_, volume_);
+  std::fill(fixed_volume_.begin(), fixed_volume_.end(), 0.0);
+  for (const Component* c : components_)
+    if (!c->volumes_move()) c->add_volumes(state_, fixed_volume_);
+  volume_ = fixed_volume_;
+  for (const Component* c : moving_volumes_) c->add_volumes(state_, volume_);
+  air_free_ = fluid_.parameter(Fluid::kAirFraction) <= 0.0;
+  beta_liquid_ = fluid_.bulk_modulus(0.0);
 }
 
 void CircuitSolver::evaluate(const CircuitState& s, Equations::Mode m) {
-  r_.setZero();
+  std::fill(r_.begin(), r_.end(), 0.0);
   if (m == Equations::Mode::Jacobian) {
-    g_.setZero();
+    std::fill(g_.begin(), g_.end(), 0.0);
     std::fill(dry_static_.begin(), dry_static_.end(), 0.0);
     std::fill(dry_kinetic_.begin(), dry_kinetic_.end(), 0.0);
   }
-  Equations eq(s, m, r_, g_, dry_static_, dry_kinetic_, power_);
-  for (const Component* c : components_) c->stamp(eq);
+  Equations eq(s, m, r_.data(), g_.data(), n_, dry_static_, dry_kinetic_, power_);
+  if (m == Equations::Mode::Jacobian) eq.record_pattern(pattern_, pattern_grew_);
+  for (const Component* c : stamping_) c->stamp(eq);
+  // A coupling seen for the first time (a valve edge opened): the elimination order is chosen
+  // anew for the pattern seen so far (rarely; the entries of a closed edge stay in it).
+  if (pattern_grew_) {
+    lu_.set_pattern(pattern_);
+    pattern_grew_ = false;
+  }
 }
 
 void CircuitSolver::account_power(const CircuitState& s, std::array<double, kEnergyKinds>& power) {
   power.fill(0.0);
-  Equations eq(s, Equations::Mode::Power, r_, g_, dry_static_, dry_kinetic_, power);
-  for (const Component* c : components_) c->stamp(eq);
+  Equations eq(s, Equations::Mode::Power, r_.data(), g_.data(), n_, dry_static_, dry_kinetic_, power);
+  for (const Component* c : stamping_) c->stamp(eq);
 }
 
 double CircuitSolver::kinetic_energy() const {
@@ -156,59 +179,65 @@ void CircuitSolver::step(double h) { advance(h, 0); }
 // the Jacobian did not see (a relief valve opening, a port closing) - two half steps, down to
 // h / 2^kMaxHalvings. Nothing is changed before the step is accepted.
 void CircuitSolver::advance(double h, int depth) {
-  for (const Component* c : components_) c->fix_pressures(state_);
   // Chamber volumes at the step's midpoint position (predicted), so the position-dependent
   // capacitance does not cost the method its second order.
   for (int b = 0; b < nv_; ++b) {
     const auto bu = static_cast<std::size_t>(b);
     stage_.position[bu] = state_.position[bu] + 0.5 * h * state_.velocity[bu];
   }
-  std::fill(volume_.begin(), volume_.end(), 0.0);
-  for (const Component* c : components_) c->add_volumes(stage_, volume_);
+  std::copy(fixed_volume_.begin(), fixed_volume_.end(), volume_.begin());
+  for (const Component* c : moving_volumes_) c->add_volumes(stage_, volume_);
   if (accounting_) account_power(state_, power_start_);
-  start_pressure_ = state_.pressure;
+  if (accounting_) start_pressure_ = state_.pressure;
   const double vapour_before = accounting_ ? vapour_volume() : 0.0;
 
   // --- f(y) and J at the start of the step; which constraints are active ---
   evaluate(state_, Equations::Mode::Jacobian);
-  r0_ = r_;
+  std::copy(r_.begin(), r_.end(), r0_.begin());
   classify_bodies();
   classify_nodes();
+  // W = I - gamma h J, row by row, straight into the LU's storage. Row i of J is scale_i times row
+  // i of g (dp/dt = beta/V * inflow, dv/dt = force/m); held bodies and cavitating nodes keep their
+  // value (their row of W is the identity's).
+  const auto n = static_cast<std::size_t>(n_);
+  const double minus_gamma_h = -kGamma * h;
+  auto assemble_row = [&](std::size_t row, bool pinned, double diagonal_extra) {
+    double* const w = lu_.values();
+    const SmallLu::RowSlots slots = lu_.row(row);
+    if (pinned) {
+      for (const SmallLu::Slot* e = slots.first; e != slots.last; ++e) w[e->flat] = 0.0;
+      w[slots.diagonal] = 1.0;
+      return;
+    }
+    const double* g = &g_[row * n];
+    const double scale = scale_[row];
+    for (const SmallLu::Slot* e = slots.first; e != slots.last; ++e) w[e->flat] = minus_gamma_h * (scale * g[e->column]);
+    w[slots.diagonal] = minus_gamma_h * (scale * g[row] + diagonal_extra) + 1.0;
+  };
   for (int i = 0; i < np_; ++i) {
     const auto iu = static_cast<std::size_t>(i);
     double slope = 0.0;
-    const double beta = fluid_.bulk_modulus(state_.pressure[iu], &slope);
-    scale_[i] = beta / volume_[iu];
-    f_[i] = cavitating_[iu] ? 0.0 : scale_[i] * r_[i];
-    j_.row(i) = scale_[i] * g_.row(i);
+    const double beta = air_free_ ? beta_liquid_ : fluid_.bulk_modulus(state_.pressure[iu], &slope);
+    scale_[iu] = beta / volume_[iu];
+    f_[iu] = cavitating_[iu] ? 0.0 : scale_[iu] * r_[iu];
     // The stiffening of air-laden oil as pressure rises (slope * inflow > 0) is a growing mode;
     // only its damping half belongs in W, or W loses its diagonal dominance at low pressure.
-    j_(i, i) += std::min(slope * r_[i], 0.0) / volume_[iu];
+    assemble_row(iu, cavitating_[iu] != 0, slope != 0.0 ? std::min(slope * r_[iu], 0.0) / volume_[iu] : 0.0);
   }
   for (int b = 0; b < nv_; ++b) {
     const auto bu = static_cast<std::size_t>(b);
-    const int row = np_ + b;
-    scale_[row] = 1.0 / mass_[bu];
+    const auto row = static_cast<std::size_t>(np_ + b);
+    scale_[row] = inverse_mass_[bu];
     f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
-    j_.row(row) = scale_[row] * g_.row(row);
+    assemble_row(row, held_[bu] != 0, 0.0);
   }
 
-  // --- ROS2 stages; held bodies and cavitating nodes keep their value (row of W = identity) ---
-  w_.noalias() = (-kGamma * h) * j_;
-  w_.diagonal().array() += 1.0;
-  auto pin = [&](int row) {
-    w_.row(row).setZero();
-    w_(row, row) = 1.0;
-  };
-  for (int i = 0; i < np_; ++i)
-    if (cavitating_[static_cast<std::size_t>(i)]) pin(i);
-  for (int b = 0; b < nv_; ++b)
-    if (held_[static_cast<std::size_t>(b)]) pin(np_ + b);
-  lu_.compute(w_);
-  lu_.solve(f_, k1_);
+  // --- ROS2 stages ---
+  lu_.factor();
+  lu_.solve(f_.data(), k1_.data());
 
-  stage_.pressure = state_.pressure;
-  stage_.position = state_.position;
+  std::copy(state_.pressure.begin(), state_.pressure.end(), stage_.pressure.begin());
+  std::copy(state_.position.begin(), state_.position.end(), stage_.position.begin());
   for (int i = 0; i < np_; ++i) stage_.pressure[static_cast<std::size_t>(i)] += h * k1_[i];
   for (int b = 0; b < nv_; ++b)
     stage_.velocity[static_cast<std::size_t>(b)] = state_.velocity[static_cast<std::size_t>(b)] + h * k1_[np_ + b];
@@ -218,7 +247,8 @@ void CircuitSolver::advance(double h, int depth) {
     if (cavitating_[iu]) {
       f_[i] = 0.0;
     } else {
-      f_[i] = fluid_.bulk_modulus(stage_.pressure[iu]) / volume_[iu] * r_[i];
+      // (beta / V as at the step's start when beta is a constant)
+      f_[i] = (air_free_ ? scale_[iu] : fluid_.bulk_modulus(stage_.pressure[iu]) / volume_[iu]) * r_[i];
     }
   }
   for (int b = 0; b < nv_; ++b) {
@@ -226,11 +256,11 @@ void CircuitSolver::advance(double h, int depth) {
     const int row = np_ + b;
     f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
   }
-  f_ -= 2.0 * k1_;
-  lu_.solve(f_, k2_);
-  y_ = (1.5 * h) * k1_ + (0.5 * h) * k2_;  // increment over the step
+  for (std::size_t i = 0; i < n; ++i) f_[i] -= 2.0 * k1_[i];
+  lu_.solve(f_.data(), k2_.data());
+  for (std::size_t i = 0; i < n; ++i) y_[i] = (1.5 * h) * k1_[i] + (0.5 * h) * k2_[i];  // increment over the step
 
-  if (depth < kMaxHalvings && error_norm(h) > 1.0) {
+  if (depth < kMaxHalvings && error_too_large(h)) {
     advance(0.5 * h, depth + 1);
     advance(0.5 * h, depth + 1);
     return;
@@ -245,7 +275,10 @@ void CircuitSolver::advance(double h, int depth) {
       const int row = np_ + b;
       if (held_[bu]) {
         // The force at the end of the step (linearised); ODE decides whether it breaks away.
-        ode_force_[bu] = r0_[row] + g_.row(row).dot(y_);
+        const double* g = &g_[static_cast<std::size_t>(row) * n];
+        double dot = g[0] * y_[0];
+        for (std::size_t j = 1; j < n; ++j) dot += g[j] * y_[j];
+        ode_force_[bu] = r0_[row] + dot;
       } else {
         // The force that gives exactly the predicted velocity change once ODE's motor has
         // applied the dry friction.
@@ -272,7 +305,8 @@ void CircuitSolver::advance(double h, int depth) {
     if (dv != 0.0) {
       for (int i = 0; i < np_; ++i) {
         const auto iu = static_cast<std::size_t>(i);
-        const double dp = h * j_(i, row) * dv;
+        const double j_node_body = scale_[iu] * g_[iu * n + static_cast<std::size_t>(row)];  // dp_i/dt per v
+        const double dp = h * j_node_body * dv;
         if (cavitating_[iu]) {
           vapour_[iu] -= dp / scale_[i];
         } else {
@@ -332,18 +366,21 @@ void CircuitSolver::settle_vapour() {
 
 // The embedded first-order solution of ROS2 is y + h k1; the difference to the second-order one,
 // h/2 (k1 + k2), estimates the error. Weighted per state: pressures to 0.5 bar + 1 %, speeds to
-// 1 mm/s (or mrad/s) + 1 %; pinned states (held bodies, cavitating nodes) do not count.
-double CircuitSolver::error_norm(double h) const {
-  double worst = 0.0;
-  for (int i = 0; i < n_; ++i) {
-    const bool pressure = i < np_;
-    const auto iu = static_cast<std::size_t>(pressure ? i : i - np_);
-    if (pressure ? cavitating_[iu] != 0 : held_[iu] != 0) continue;
-    const double value = pressure ? state_.pressure[iu] : state_.velocity[iu];
-    const double scale = (pressure ? kPressureTolerance : kSpeedTolerance) + kRelativeTolerance * std::abs(value);
-    worst = std::max(worst, std::abs(0.5 * h * (k1_[i] + k2_[i])) / scale);
+// 1 mm/s (or mrad/s) + 1 %; pinned states (held bodies, cavitating nodes) do not count. True when
+// any state's estimate exceeds its tolerance.
+bool CircuitSolver::error_too_large(double h) const {
+  const auto np = static_cast<std::size_t>(np_), nv = static_cast<std::size_t>(nv_);
+  for (std::size_t i = 0; i < np; ++i) {
+    if (cavitating_[i]) continue;
+    const double tolerance = kPressureTolerance + kRelativeTolerance * std::abs(state_.pressure[i]);
+    if (std::abs(0.5 * h * (k1_[i] + k2_[i])) > tolerance) return true;
   }
-  return worst;
+  for (std::size_t b = 0; b < nv; ++b) {
+    if (held_[b]) continue;
+    const double tolerance = kSpeedTolerance + kRelativeTolerance * std::abs(state_.velocity[b]);
+    if (std::abs(0.5 * h * (k1_[np + b] + k2_[np + b])) > tolerance) return true;
+  }
+  return false;
 }
 
 double CircuitSolver::compression_energy(double volume, double p0, double p1) const {

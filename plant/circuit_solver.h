@@ -20,8 +20,6 @@
 // friction or an end stop are held at zero velocity in the solve, so both sides agree.
 #pragma once
 
-#include <Eigen/Dense>
-
 #include <cstdint>
 #include <vector>
 
@@ -60,7 +58,7 @@ class CircuitSolver {
   void evaluate(const CircuitState& s, Equations::Mode mode);
   void account_power(const CircuitState& s, std::array<double, kEnergyKinds>& power);
   void advance(double h, int depth);
-  double error_norm(double h) const;
+  bool error_too_large(double h) const;
   void classify_bodies();
   void classify_nodes();
   void settle_vapour();
@@ -70,6 +68,8 @@ class CircuitSolver {
   double compression_energy(double volume, double p0, double p1) const;
 
   std::vector<Component*> components_;
+  std::vector<Component*> moving_volumes_;  // the components whose volumes follow body positions
+  std::vector<Component*> stamping_;        // the components that stamp (Component::uses())
   const Fluid& fluid_;
   RigidBodyWorld& world_;
   int np_;  // pressure states
@@ -79,10 +79,14 @@ class CircuitSolver {
   CircuitState state_;
   CircuitState stage_;
   std::vector<double> volume_;          // per node, m^3
+  std::vector<double> fixed_volume_;    // per node: the part that does not follow body positions, m^3
+  bool air_free_ = false;               // the fluid's bulk modulus is a constant, beta_liquid_
+  double beta_liquid_ = 0.0;
   std::vector<double> vapour_;          // per pressure state: vapour volume of a cavitating node, m^3
   std::vector<char> cavitating_;        // per pressure state, this step
   std::vector<double> start_pressure_;  // pressures at the start of the step
   std::vector<double> mass_;    // per body
+  std::vector<double> inverse_mass_;
   std::vector<double> dry_static_, dry_kinetic_;
   std::vector<double> friction_;        // dry friction force used in the solve, per body
   std::vector<double> friction_limit_;  // force limit handed to ODE, per body
@@ -91,9 +95,13 @@ class CircuitSolver {
   std::array<double, kEnergyKinds> power_{};  // scratch for Residual/Jacobian modes
   std::array<double, kEnergyKinds> power_start_{}, power_end_{};
 
-  Eigen::VectorXd r_, r0_, f_, k1_, k2_, y_, scale_;
-  Eigen::MatrixXd g_, j_, w_;
-  SmallLu lu_;
+  // Per unknown (pressure states, then bodies), allocated once. The system is small and sparse:
+  // plain loops over row-major storage, W assembled straight into the LU's storage.
+  std::vector<double> r_, r0_, f_, k1_, k2_, y_, scale_;
+  std::vector<double> g_;  // n x n row-major: d(residual)/d(state) of the last Jacobian evaluation
+  std::vector<char> pattern_;  // n x n: the entries of g (and so of W) any stamp has written so far
+  bool pattern_grew_ = false;
+  SmallLu lu_;             // holds W = I - gamma h J, then its factors
 
   std::uint64_t steps_taken_ = 0;
   bool accounting_ = false;

@@ -46,6 +46,12 @@ class Component {
   virtual DofId body(int /*connector*/) const { return {}; }
 
   // --- Stepping (called by the plant, in this order) ---
+  /// The per-step calls below that a component implements: the plant makes only those (a dozen
+  /// empty virtual calls per step add up at thousands of steps per second). All, unless a
+  /// derived constructor says fewer with declare_hooks().
+  enum Hook : unsigned { kReadsInputs = 1u, kAdvances = 2u, kStamps = 4u, kPublishes = 8u };
+  bool uses(Hook hook) const { return (hooks_ & hook) != 0; }
+
   /// Once per tick: copy input ports into internal commands (inputs hold their last value).
   virtual void read_inputs() {}
   /// When the physics step size h is first known or changes: exact discretisations.
@@ -57,6 +63,9 @@ class Component {
   virtual void fix_pressures(CircuitState& /*state*/) const {}
   /// Volumes this component adds to its nodes (m^3) at the current body positions.
   virtual void add_volumes(const CircuitState& /*state*/, std::vector<double>& /*node_volume*/) const {}
+  /// Whether those volumes change with body positions (a cylinder's chambers): then add_volumes()
+  /// is called every physics step, else only when the parameters change.
+  virtual bool volumes_move() const { return false; }
   /// Mass (kg) or inertia (kg m^2) this component adds to bodies.
   virtual void add_inertia(std::vector<double>& /*dof_mass*/) const {}
   /// The component's flows and forces at the state the Equations expose.
@@ -72,6 +81,9 @@ class Component {
   /// Called by set_parameter() after every accepted change (and by each derived constructor):
   /// recompute derived quantities.
   virtual void parameters_changed() {}
+  /// Declares the per-step hooks this component implements (a mask of Hook); a hook left out is
+  /// never called.
+  void declare_hooks(unsigned hooks) { hooks_ = hooks; }
 
  private:
   const ComponentType& type_;
@@ -79,6 +91,7 @@ class Component {
   std::vector<double> values_;
   std::vector<double> signals_;
   std::vector<int> targets_;
+  unsigned hooks_ = kReadsInputs | kAdvances | kStamps | kPublishes;
 };
 
 /// The factory a ComponentType points at: `ComponentType{..., make_component<Tank>}`.

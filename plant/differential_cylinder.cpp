@@ -66,6 +66,7 @@ const ComponentType& DifferentialCylinder::type_info() { return kType; }
 
 DifferentialCylinder::DifferentialCylinder(std::string name, std::vector<double> values)
     : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(kStamps | kPublishes);
   parameters_changed();
 }
 
@@ -100,9 +101,11 @@ void DifferentialCylinder::stamp(Equations& eq) const {
   const double cv = parameter(kViscousFriction);
   eq.force(rod_, -cv * v, -cv, EnergyKind::Friction);
   eq.force(rod_, -parameter(kLoadForce), 0.0, EnergyKind::Load);
-  const double fc = parameter(kCoulombFriction), fs = parameter(kStaticFriction);
-  const double s = v / parameter(kStribeckVelocity);
-  eq.dry_friction(rod_, fs, fc + (fs - fc) * std::exp(-s * s));
+  if (eq.wants_jacobian()) {  // dry friction is recorded once per step, at its start
+    const double fc = parameter(kCoulombFriction), fs = parameter(kStaticFriction);
+    const double s = v / parameter(kStribeckVelocity);
+    eq.dry_friction(rod_, fs, fc + (fs - fc) * std::exp(-s * s));
+  }
 }
 
 void DifferentialCylinder::publish(const CircuitState& state, double /*dt*/) {

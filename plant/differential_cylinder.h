@@ -39,6 +39,7 @@ class DifferentialCylinder final : public Component {
 
   void create_bodies(RigidBodyWorld& world) override;
   void add_volumes(const CircuitState& state, std::vector<double>& node_volume) const override;
+  bool volumes_move() const override { return true; }
   void add_inertia(std::vector<double>& dof_mass) const override;
   void stamp(Equations& eq) const override;
   void publish(const CircuitState& state, double dt) override;

@@ -7,10 +7,10 @@
 // So a model's equations are written once and the energy balance cannot drift from them.
 #pragma once
 
-#include <Eigen/Dense>
-
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <vector>
 
 #include "plant/circuit_state.h"
 
@@ -20,10 +20,19 @@ class Equations {
  public:
   enum class Mode { Residual, Jacobian, Power };
 
-  Equations(const CircuitState& state, Mode mode, Eigen::VectorXd& residual, Eigen::MatrixXd& jacobian,
+  /// residual: one entry per unknown (pressure states, then bodies); jacobian: row-major, `unknowns`
+  /// entries per row (the solver's storage, used in place).
+  Equations(const CircuitState& state, Mode mode, double* residual, double* jacobian, int unknowns,
             std::vector<double>& dry_static, std::vector<double>& dry_kinetic, std::array<double, kEnergyKinds>& power)
-      : s_(state), mode_(mode), r_(residual), g_(jacobian), dry_static_(dry_static), dry_kinetic_(dry_kinetic),
-        power_(power) {}
+      : s_(state), mode_(mode), r_(residual), g_(jacobian), n_(static_cast<std::size_t>(unknowns)),
+        dry_static_(dry_static), dry_kinetic_(dry_kinetic), power_(power) {}
+
+  /// Jacobian mode needs this: each entry of the Jacobian a stamp writes is marked in `pattern`
+  /// (row-major, like the Jacobian), and `grew` set when one was not marked before.
+  void record_pattern(std::vector<char>& pattern, bool& grew) {
+    pattern_ = pattern.data();
+    grew_ = &grew;
+  }
 
   Mode mode() const { return mode_; }
   bool wants_jacobian() const { return mode_ == Mode::Jacobian; }
@@ -34,7 +43,7 @@ class Equations {
   double position(DofId d) const { return s_.x(d); }
 
   /// Flow q (m^3/s) from node `from` to node `to`; dq_ddp = dq/d(p_from - p_to).
-  void flow(NodeId from, NodeId to, double q, double dq_ddp, EnergyKind kind) {
+  [[gnu::always_inline]] void flow(NodeId from, NodeId to, double q, double dq_ddp, EnergyKind kind) {
     if (mode_ == Mode::Power) {
       if (kind != EnergyKind::Internal) power_[static_cast<int>(kind)] += (s_.p(from) - s_.p(to)) * q;
       return;
@@ -44,19 +53,19 @@ class Equations {
     if (ts) r_[to.index] += q;
     if (mode_ == Mode::Jacobian) {
       if (fs) {
-        g_(from.index, from.index) -= dq_ddp;
-        if (ts) g_(from.index, to.index) += dq_ddp;
+        g(from.index, from.index) -= dq_ddp;
+        if (ts) g(from.index, to.index) += dq_ddp;
       }
       if (ts) {
-        g_(to.index, to.index) -= dq_ddp;
-        if (fs) g_(to.index, from.index) += dq_ddp;
+        g(to.index, to.index) -= dq_ddp;
+        if (fs) g(to.index, from.index) += dq_ddp;
       }
     }
   }
 
   /// A body that changes the volume of `node` by `area` per unit of its coordinate (m^2, or
   /// m^3/rad for a motor): the node loses area*v of inflow and the body feels area*p.
-  void displacement(NodeId node, DofId dof, double area) {
+  [[gnu::always_inline]] void displacement(NodeId node, DofId dof, double area) {
     if (mode_ == Mode::Power) return;  // conversion between fluid and mechanics, not a loss
     const int row = dof_row(dof);
     const bool ns = is_state(node);
@@ -64,22 +73,22 @@ class Equations {
     r_[row] += area * s_.p(node);
     if (mode_ == Mode::Jacobian) {
       if (ns) {
-        g_(node.index, row) -= area;
-        g_(row, node.index) += area;
+        g(node.index, row) -= area;
+        g(row, node.index) += area;
       }
     }
   }
 
   /// Force (or torque) f on a body that depends on pressures only through stamps above;
   /// df_dv = df/dv of the same body.
-  void force(DofId dof, double f, double df_dv, EnergyKind kind) {
+  [[gnu::always_inline]] void force(DofId dof, double f, double df_dv, EnergyKind kind) {
     if (mode_ == Mode::Power) {
       if (kind != EnergyKind::Internal) power_[static_cast<int>(kind)] -= f * s_.v(dof);
       return;
     }
     const int row = dof_row(dof);
     r_[row] += f;
-    if (mode_ == Mode::Jacobian) g_(row, row) += df_dv;
+    if (mode_ == Mode::Jacobian) g(row, row) += df_dv;
   }
 
   /// Dry (Coulomb/Stribeck) friction on a body: the levels it can hold at rest and while sliding.
@@ -97,11 +106,25 @@ class Equations {
 
   const CircuitState& s_;
   Mode mode_;
-  Eigen::VectorXd& r_;
-  Eigen::MatrixXd& g_;
+  double& g(int row, int column) {
+    const std::size_t i = static_cast<std::size_t>(row) * n_ + static_cast<std::size_t>(column);
+    if (pattern_[i] == 0) [[unlikely]]
+      mark(i);
+    return g_[i];
+  }
+  [[gnu::noinline]] void mark(std::size_t i) {
+    pattern_[i] = 1;
+    *grew_ = true;
+  }
+
+  double* r_;
+  double* g_;
+  std::size_t n_;
   std::vector<double>& dry_static_;
   std::vector<double>& dry_kinetic_;
   std::array<double, kEnergyKinds>& power_;
+  char* pattern_ = nullptr;
+  bool* grew_ = nullptr;
 };
 
 }  // namespace plant

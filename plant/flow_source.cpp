@@ -30,7 +30,9 @@ const ComponentType kType{
 const ComponentType& FlowSource::type_info() { return kType; }
 
 FlowSource::FlowSource(std::string name, std::vector<double> values)
-    : Component(kType, std::move(name), std::move(values)) {}
+    : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(kStamps);
+}
 
 void FlowSource::stamp(Equations& eq) const { eq.flow(node(kA), node(kB), parameter(kFlow), 0.0, EnergyKind::Supply); }
 

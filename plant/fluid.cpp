@@ -32,7 +32,10 @@ const ComponentType kType{
 
 const ComponentType& Fluid::type_info() { return kType; }
 
-Fluid::Fluid(std::string name, std::vector<double> values) : Component(kType, std::move(name), std::move(values)) {}
+Fluid::Fluid(std::string name, std::vector<double> values)
+    : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(0u);
+}
 
 double Fluid::bulk_modulus(double p, double* slope) const {
   const double a0 = parameter(kAirFraction);

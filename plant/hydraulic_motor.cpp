@@ -49,6 +49,7 @@ const ComponentType& HydraulicMotor::type_info() { return kType; }
 
 HydraulicMotor::HydraulicMotor(std::string name, std::vector<double> values)
     : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(kStamps | kPublishes);
   parameters_changed();
 }
 

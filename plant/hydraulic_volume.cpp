@@ -27,7 +27,9 @@ const ComponentType kType{
 const ComponentType& HydraulicVolume::type_info() { return kType; }
 
 HydraulicVolume::HydraulicVolume(std::string name, std::vector<double> values)
-    : Component(kType, std::move(name), std::move(values)) {}
+    : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(0u);
+}
 
 void HydraulicVolume::add_volumes(const CircuitState& /*state*/, std::vector<double>& node_volume) const {
   node_volume[static_cast<std::size_t>(node(kPort).index)] += parameter(kVolume);

@@ -38,7 +38,10 @@ const ComponentType kType{
 
 const ComponentType& Orifice::type_info() { return kType; }
 
-Orifice::Orifice(std::string name, std::vector<double> values) : Component(kType, std::move(name), std::move(values)) {}
+Orifice::Orifice(std::string name, std::vector<double> values)
+    : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(kStamps | kPublishes);
+}
 
 double Orifice::flow_coefficient(double density) const {
   const double d = parameter(kDiameter);

@@ -19,7 +19,8 @@ struct FlowAndSlope {
 inline FlowAndSlope orifice_flow(double k, double dp, double d) {
   const double s = dp * dp + d * d;
   const double inv_fourth_root = 1.0 / std::sqrt(std::sqrt(s));
-  return {k * dp * inv_fourth_root, k * (0.5 * dp * dp + d * d) * inv_fourth_root / s};
+  const double inv_square_root = inv_fourth_root * inv_fourth_root;  // 1/s = its square: no second division
+  return {k * dp * inv_fourth_root, k * (0.5 * dp * dp + d * d) * inv_fourth_root * (inv_square_root * inv_square_root)};
 }
 
 }  // namespace plant

@@ -83,6 +83,11 @@ Plant::Plant(const PlantDescription& description) : max_step_(description.solver
 
   std::vector<Component*> raw;
   for (auto& c : components_) raw.push_back(c.get());
+  for (Component* c : raw) {
+    if (c->uses(Component::kReadsInputs)) reading_.push_back(c);
+    if (c->uses(Component::kAdvances)) advancing_.push_back(c);
+    if (c->uses(Component::kPublishes)) publishing_.push_back(c);
+  }
   solver_ = std::make_unique<CircuitSolver>(std::move(raw), *fluid, *world_, nodes, states);
   CircuitState& state = solver_->state();
   for (int i = 0; i < states; ++i) state.pressure[static_cast<std::size_t>(i)] = state_connection[static_cast<std::size_t>(i)]->initial_pressure;
@@ -124,12 +129,12 @@ void Plant::step(sim::Time /*now*/, sim::Duration dt) {
     for (auto& c : components_) c->configure_step(h_);
     configured_for_ = dt;
   }
-  for (auto& c : components_) c->read_inputs();
+  for (Component* c : reading_) c->read_inputs();
   for (int s = 0; s < substeps_; ++s) {
-    for (auto& c : components_) c->advance(h_);
+    for (Component* c : advancing_) c->advance(h_);
     solver_->step(h_);
   }
-  for (auto& c : components_) c->publish(solver_->state(), tick);
+  for (Component* c : publishing_) c->publish(solver_->state(), tick);
 }
 
 Component* Plant::find(std::string_view name) const {

@@ -64,6 +64,8 @@ class Plant final : public sim::Steppable {
 
   std::unique_ptr<RigidBodyWorld> world_;
   std::vector<std::unique_ptr<Component>> components_;
+  // The components whose per-step hooks do something (Component::uses()).
+  std::vector<Component*> reading_, advancing_, publishing_;
   std::unique_ptr<CircuitSolver> solver_;
   sim::PortList ports_;
   double max_step_;

@@ -31,7 +31,9 @@ const ComponentType kType{
 const ComponentType& PressureSensor::type_info() { return kType; }
 
 PressureSensor::PressureSensor(std::string name, std::vector<double> values)
-    : Component(kType, std::move(name), std::move(values)) {}
+    : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(kPublishes);
+}
 
 void PressureSensor::publish(const CircuitState& state, double dt) {
   const double p = state.p(node(kPort));

@@ -37,7 +37,9 @@ const ComponentType kType{
 const ComponentType& ReliefValve::type_info() { return kType; }
 
 ReliefValve::ReliefValve(std::string name, std::vector<double> values)
-    : Component(kType, std::move(name), std::move(values)) {}
+    : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(kStamps | kPublishes);
+}
 
 double ReliefValve::flow(double dp, double* slope) const {
   const double u = dp - parameter(kCrackingPressure);

@@ -40,6 +40,7 @@ struct RigidBodyWorld::Dof {
   double upper = 0.0;
   double mass = 1.0;
   double position = 0.0;   // slider: clamped to the stops; hinge: unwrapped angle
+  double joint_position = 0.0;  // slider: the joint's position as ODE measures it (a hair past a stop)
   double raw_angle = 0.0;  // hinge: ODE's wrapped angle at the last step
   double velocity = 0.0;
   double friction_loss = 0.0;
@@ -48,6 +49,10 @@ struct RigidBodyWorld::Dof {
   bool closed_form = false;  // this step: integrated in closed form, not by ODE
   bool resting = false;      // closed form: held at rest by its friction motor
   double motor_force = 0.0;  // closed form: the saturated friction motor's force on the body
+  // Closed-form steps leave ODE's copy of the body alone: its position, orientation and velocity
+  // are brought up to date only when ODE steps the body again (hand_to_ode()).
+  bool ode_current = true;
+  double pending_turn = 0.0;  // hinge: rotation since ODE's copy was last current
 };
 
 RigidBodyWorld::RigidBodyWorld() {
@@ -74,7 +79,7 @@ DofId RigidBodyWorld::add_slider(double lower, double upper, double initial_posi
   dJointSetSliderParam(d->joint, dParamStopERP, 0);  // penetration is projected out in step()
   dJointSetFeedback(d->joint, &d->feedback);
   dBodySetPosition(d->body, initial_position, 0, 0);
-  d->position = initial_position;
+  d->position = d->joint_position = initial_position;
   dofs_.push_back(std::move(d));
   const DofId id{size() - 1};
   set_limits(id, lower, upper);
@@ -148,6 +153,7 @@ double RigidBodyWorld::impact_loss(DofId dof) const { return at(dof).impact_loss
 // and without force (nothing moves), sizes it for all of them before the first tick.
 void RigidBodyWorld::reserve_step_memory() {
   for (auto& d : dofs_) {
+    hand_to_ode(*d);
     if (!d->enabled) {
       dBodyEnable(d->body);
       d->enabled = true;
@@ -156,36 +162,70 @@ void RigidBodyWorld::reserve_step_memory() {
   if (!dofs_.empty()) dWorldStep(world_, 1e-9);
 }
 
-void RigidBodyWorld::step(double h, const std::vector<double>& force, const std::vector<double>& friction_limit) {
+void RigidBodyWorld::hand_to_ode(Dof& d) {
+  if (d.ode_current) return;
+  if (d.slider) {
+    const dReal* p = dBodyGetPosition(d.body);
+    dBodySetPosition(d.body, p[0] + (d.joint_position - dJointGetSliderPosition(d.joint)), p[1], p[2]);
+    const dReal* lv = dBodyGetLinearVel(d.body);
+    dBodySetLinearVel(d.body, d.velocity, lv[1], lv[2]);
+  } else {
+    dQuaternion dq, q;
+    dQFromAxisAndAngle(dq, 0, 0, 1, d.pending_turn);
+    dQMultiply0(q, dq, dBodyGetQuaternion(d.body));
+    dBodySetQuaternion(d.body, q);
+    d.pending_turn = 0.0;
+    d.raw_angle = dJointGetHingeAngle(d.joint);
+    dBodySetAngularVel(d.body, 0, 0, d.velocity);
+  }
+  d.ode_current = true;
+}
+
+void RigidBodyWorld::step(double h, std::span<const double> force, std::span<const double> friction_limit) {
   const sim::TickProbe probe(sim::TickPart::Ode);
   // Which bodies ODE steps. Clear of its stops, a body's only constraint in a step is its
   // friction motor, one row decoupled from the joint's others, whose LCP has a closed-form
   // solution: the motor force that would bring the body to rest within the step, clamped to the
   // friction limit. Held (not clamped): the body stays at rest, v1 = 0 - a resting body, which ODE
   // need not step. Clamped: the body slides on under the constant force -limit sign(v), and ODE's
-  // step reduces to v1 = v0 + h (F + lambda) / m. Both are done here; cases within a margin of the
-  // limit, and bodies on or at a stop (limit rows, the motor's behaviour there), are ODE's. Bodies
-  // not stepped by ODE are disabled for that step so that it skips their islands
-  // (docs/plant.md, "Which bodies ODE steps").
+  // step reduces to v1 = v0 + h (F + lambda) / m. On a stop, the limit row joins in: when the
+  // force pushes the body into the stop, or the motor can hold it, the body stays where it is
+  // (v1 = 0, the stop and the motor share the force, neither does work) - a body at rest on its
+  // stop, which ODE need not step either. All three are done here; cases within a margin of the
+  // limit, and a body leaving its stop, are ODE's. Bodies not stepped by ODE are disabled for that
+  // step so that it skips their islands, and their ODE copy is brought up to date only when ODE
+  // steps them next (docs/plant.md, "Which bodies ODE steps").
   bool any_in_ode = false;
   for (std::size_t i = 0; i < dofs_.size(); ++i) {
     Dof& d = *dofs_[i];
     const double limit = friction_limit[i];
     const double stop_force = -d.mass * d.velocity / h - force[i];
-    // ODE's own test of a slider's stops (at the start of the step).
-    const bool clear = !d.slider || (dJointGetSliderPosition(d.joint) > d.lower && dJointGetSliderPosition(d.joint) < d.upper);
-    const bool slides = std::abs(stop_force) > limit * (1.0 + kSaturationMargin);
-    const bool holds = std::abs(stop_force) < limit * (1.0 - kSaturationMargin);
-    d.closed_form = clear && (slides || holds);
-    if (d.closed_form) {
+    // ODE's own test of a slider's stops (at the start of the step), on the joint position ODE
+    // would measure.
+    const bool on_lower = d.slider && d.joint_position <= d.lower;
+    const bool on_upper = d.slider && !on_lower && d.joint_position >= d.upper;
+    const double below = limit * (1.0 - kSaturationMargin);
+    if (on_lower || on_upper) {
+      // Held on the stop: lambda pushes into it (the stop can take any part of it), or the motor
+      // can supply it.
+      d.closed_form = on_lower ? stop_force > -below : stop_force < below;
+      d.resting = true;
+      d.motor_force = 0.0;
+    } else {
+      const bool slides = std::abs(stop_force) > limit * (1.0 + kSaturationMargin);
+      const bool holds = std::abs(stop_force) < below;
+      d.closed_form = slides || holds;
       d.resting = holds;
       d.motor_force = holds ? stop_force : stop_force > 0.0 ? limit : -limit;
+    }
+    if (d.closed_form) {
       if (d.enabled) {
         dBodyDisable(d.body);
         d.enabled = false;
       }
       continue;
     }
+    hand_to_ode(d);
     if (!d.enabled) {
       dBodyEnable(d.body);
       d.enabled = true;
@@ -211,14 +251,10 @@ void RigidBodyWorld::step(double h, const std::vector<double>& force, const std:
       double x;
       if (d.closed_form) {
         d.velocity = d.resting ? 0.0 : v0 + h * (force[i] + d.motor_force) / d.mass;
-        const dReal* lv = dBodyGetLinearVel(d.body);
-        dBodySetLinearVel(d.body, d.velocity, lv[1], lv[2]);
         // Trapezoidal position, as below for ODE's steps.
-        const double x0 = dJointGetSliderPosition(d.joint);
-        const dReal* p = dBodyGetPosition(d.body);
-        dBodySetPosition(d.body, p[0] + 0.5 * h * (v0 + d.velocity), p[1], p[2]);
-        x = x0 + 0.5 * h * (v0 + d.velocity);
+        x = d.joint_position + 0.5 * h * (v0 + d.velocity);
         d.friction_loss = -d.motor_force * d.velocity * h;
+        d.ode_current = false;
       } else {
         d.velocity = dJointGetSliderPositionRate(d.joint);
         // ODE advances positions with the end-of-step velocity (x += h v1, first order); move the
@@ -232,32 +268,37 @@ void RigidBodyWorld::step(double h, const std::vector<double>& force, const std:
       }
       // ODE engages a stop only from the step after the body reached it: project the overshoot
       // out and end the motion into the stop (an inelastic impact).
-      const bool below = x < d.lower, above = x > d.upper;
-      if (below || above) {
-        const double stop = below ? d.lower - kStopInset : d.upper + kStopInset;
-        const dReal* p = dBodyGetPosition(d.body);
-        dBodySetPosition(d.body, p[0] + (stop - x), p[1], p[2]);
-        if ((below && d.velocity < 0.0) || (above && d.velocity > 0.0)) {
+      const bool past_lower = x < d.lower, past_upper = x > d.upper;
+      if (past_lower || past_upper) {
+        const double stop = past_lower ? d.lower - kStopInset : d.upper + kStopInset;
+        if (!d.closed_form) {
+          const dReal* p = dBodyGetPosition(d.body);
+          dBodySetPosition(d.body, p[0] + (stop - x), p[1], p[2]);
+        }
+        if ((past_lower && d.velocity < 0.0) || (past_upper && d.velocity > 0.0)) {
           d.impact_loss = 0.5 * d.mass * d.velocity * d.velocity;
           d.velocity = 0.0;
-          dBodySetLinearVel(d.body, 0, 0, 0);
+          if (!d.closed_form) dBodySetLinearVel(d.body, 0, 0, 0);
         }
         x = stop;
       }
+      d.joint_position = x;
       d.position = std::fmin(std::fmax(x, d.lower), d.upper);
     } else {
       double turn;  // the step's rotation about the axis, trapezoidal as for sliders
       if (d.closed_form) {
         d.velocity = d.resting ? 0.0 : v0 + h * (force[i] + d.motor_force) / d.mass;
-        dBodySetAngularVel(d.body, 0, 0, d.velocity);
         turn = 0.5 * h * (v0 + d.velocity);
         d.friction_loss = -d.motor_force * d.velocity * h;
-      } else {
-        d.velocity = dJointGetHingeAngleRate(d.joint);
-        // ODE turned the body by h w1: turn back by h/2 (w1 - w0) about the axis.
-        turn = -0.5 * h * (d.velocity - v0);
-        d.friction_loss = -d.feedback.t1[2] * d.velocity * h;
+        d.pending_turn += turn;
+        d.position += turn;
+        d.ode_current = false;
+        continue;
       }
+      d.velocity = dJointGetHingeAngleRate(d.joint);
+      // ODE turned the body by h w1: turn back by h/2 (w1 - w0) about the axis.
+      turn = -0.5 * h * (d.velocity - v0);
+      d.friction_loss = -d.feedback.t1[2] * d.velocity * h;
       dQuaternion dq, q;
       dQFromAxisAndAngle(dq, 0, 0, 1, turn);
       dQMultiply0(q, dq, dBodyGetQuaternion(d.body));

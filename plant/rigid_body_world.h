@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "plant/circuit_state.h"
@@ -41,7 +42,7 @@ class RigidBodyWorld {
 
   /// One step of length h: force[i] (N or N m) along each body's axis; friction_limit[i] >= 0 is
   /// the dry friction the body's joint motor may apply to hold it at rest or brake it.
-  void step(double h, const std::vector<double>& force, const std::vector<double>& friction_limit);
+  void step(double h, std::span<const double> force, std::span<const double> friction_limit);
 
   double position(DofId dof) const;  ///< m within the stops, or unbounded rad
   double velocity(DofId dof) const;  ///< m/s or rad/s
@@ -55,6 +56,8 @@ class RigidBodyWorld {
  private:
   struct Dof;
   Dof& at(DofId dof) const;
+  /// Writes the motion integrated in closed form since the body's last ODE step into ODE.
+  static void hand_to_ode(Dof& d);
 
   dxWorld* world_;
   std::vector<std::unique_ptr<Dof>> dofs_;

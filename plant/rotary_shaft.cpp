@@ -38,7 +38,9 @@ const ComponentType kType{
 const ComponentType& RotaryShaft::type_info() { return kType; }
 
 RotaryShaft::RotaryShaft(std::string name, std::vector<double> values)
-    : Component(kType, std::move(name), std::move(values)) {}
+    : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(kStamps | kPublishes);
+}
 
 void RotaryShaft::create_bodies(RigidBodyWorld& world) { shaft_ = world.add_hinge(parameter(kInitialAngle)); }
 

@@ -1,77 +1,193 @@
-// LU factorisation with partial pivoting for the circuit solver's small dense W (nodes + bodies,
-// about ten unknowns). Eigen's PartialPivLU for dynamic sizes spends most of its time at this size
-// in blocking and dispatch; this is the same algorithm (pivot: the largest magnitude in the
-// column, rows swapped) in plain loops over storage allocated once. Like Eigen's, a zero pivot is
-// not an error: the solve then yields inf/NaN, which the step's error control rejects.
+// Sparse LU factorisation of the circuit solver's W = I - gamma h J (nodes + bodies, about ten
+// unknowns), on dense row-major storage allocated once: the solver assembles W straight into
+// row(), factor() overwrites it with the factors, solve() uses them.
+//
+// W is sparse - a node meets only its neighbours, a body its chambers - so the elimination visits
+// only the entries of W's pattern and their fill-in, in minimum-degree order (set_pattern(): the
+// unknown with the fewest neighbours first, its neighbours then joined). For a tree of valves and
+// actuators like the reference circuit the factors have almost no fill-in, where eliminating the
+// supply node (which meets every valve) first would fill them in completely.
+//
+// No pivoting: scaled by rows (V/beta for a node, the mass for a body), W is the identity's
+// scaling plus gamma h times flow conductances (symmetric, positive semidefinite: a Laplacian),
+// damping (a nonnegative diagonal) and the chamber-body couplings (skew-symmetric: area on one
+// side, -area on the other). Its symmetric part is positive definite, so every pivot is positive
+// in any elimination order and the growth of the entries stays bounded; the skew couplings are
+// small against the diagonal at the steps used (their ratio is about (gamma omega h)^2 for a mass
+// on oil springs of natural frequency omega). Rows pinned to the identity (held bodies, cavitating
+// nodes) drop out of the elimination. Should a pivot nevertheless be zero, the solve yields
+// inf/NaN, which the step's error control rejects.
 #pragma once
 
-#include <Eigen/Dense>
-
-#include <cmath>
+#include <algorithm>
 #include <cstddef>
-#include <utility>
+#include <cstdint>
 #include <vector>
 
 namespace plant {
 
 class SmallLu {
  public:
-  explicit SmallLu(int n) : n_(static_cast<std::size_t>(n)), lu_(n_ * n_, 0.0), perm_(n_, 0) {}
+  explicit SmallLu(int n)
+      : n_(static_cast<std::size_t>(n)),
+        lu_(n_ * n_, 0.0),
+        position_(n_, 0),
+        order_(n_, 0),
+        eliminations_(n_ * n_),
+        elimination_end_(n_, 0),
+        inverse_pivot_(n_, 0.0),
+        updates_(n_ * n_ * n_ / 3 + n_),
+        substitutions_(2 * n_ * n_ + n_),
+        row_start_(n_ + 1, 0),
+        row_slots_(n_ * n_),
+        adjacent_(n_ * n_, 0),
+        eliminated_(n_, 0) {
+    std::vector<char> diagonal(n_ * n_, 0);
+    for (std::size_t i = 0; i < n_; ++i) diagonal[i * n_ + i] = 1;
+    set_pattern(diagonal);
+  }
 
-  void compute(const Eigen::MatrixXd& a) {
+  /// Where row r of W (in the solver's numbering) is stored: its diagonal entry at values()[diagonal],
+  /// and the off-diagonal entries the factors use at values()[flat], for each {column, flat} in
+  /// [first, last). Before factor(), all of them must be written; W's other entries are zero.
+  struct Slot {
+    std::uint32_t column, flat;
+  };
+  struct RowSlots {
+    const Slot* first;
+    const Slot* last;
+    std::size_t diagonal;
+  };
+  RowSlots row(std::size_t r) const {
+    return {&row_slots_[row_start_[r]], &row_slots_[row_start_[r + 1]], position_[r] * (n_ + 1)};
+  }
+  double* values() { return lu_.data(); }
+
+  /// The entries of W that can be nonzero (row-major, n x n; nonzero = may be nonzero): chooses
+  /// the elimination order and the factors' pattern, and lays out factor() and solve() as runs
+  /// over it. Entries outside it must be zero in every W assembled afterwards. Does not allocate.
+  void set_pattern(const std::vector<char>& pattern) {
     const std::size_t n = n_;
-    for (std::size_t i = 0; i < n; ++i) {
-      perm_[i] = i;
-      for (std::size_t j = 0; j < n; ++j) lu_[i * n + j] = a(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
-    }
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n; ++j)
+        adjacent_[i * n + j] = i != j && (pattern[i * n + j] != 0 || pattern[j * n + i] != 0);
+    std::fill(eliminated_.begin(), eliminated_.end(), 0);
     for (std::size_t k = 0; k < n; ++k) {
-      std::size_t pivot = k;
-      double biggest = std::abs(lu_[k * n + k]);
-      for (std::size_t i = k + 1; i < n; ++i) {
-        const double v = std::abs(lu_[i * n + k]);
-        if (v > biggest) {
-          biggest = v;
-          pivot = i;
+      std::size_t best = n, best_degree = n + 1;
+      for (std::size_t v = 0; v < n; ++v) {
+        if (eliminated_[v]) continue;
+        std::size_t degree = 0;
+        for (std::size_t u = 0; u < n; ++u) degree += !eliminated_[u] && adjacent_[v * n + u];
+        if (degree < best_degree) {
+          best = v;
+          best_degree = degree;
         }
       }
-      if (pivot != k) {
-        for (std::size_t j = 0; j < n; ++j) std::swap(lu_[k * n + j], lu_[pivot * n + j]);
-        std::swap(perm_[k], perm_[pivot]);
+      eliminated_[best] = 1;
+      order_[k] = best;
+      position_[best] = k;
+      // Eliminating `best` couples all its remaining neighbours: the fill-in.
+      for (std::size_t a = 0; a < n; ++a) {
+        if (eliminated_[a] || !adjacent_[best * n + a]) continue;
+        for (std::size_t b = 0; b < n; ++b)
+          if (b != a && !eliminated_[b] && adjacent_[best * n + b]) adjacent_[a * n + b] = 1;
       }
-      const double d = lu_[k * n + k];
-      if (d == 0.0) continue;
-      const double* row_k = &lu_[k * n];
-      for (std::size_t i = k + 1; i < n; ++i) {
-        double* row_i = &lu_[i * n];
-        if (row_i[k] == 0.0) continue;  // W is sparse: most rows need no update
-        const double l = row_i[k] / d;
-        row_i[k] = l;
-        for (std::size_t j = k + 1; j < n; ++j) row_i[j] -= l * row_k[j];
+    }
+    // adjacent_ is now the factors' (symmetric) pattern. For position k, the later positions m
+    // coupled to it are both the rows below the pivot with an entry in column k (L) and the
+    // columns right of it in row k (U).
+    auto later = [&](std::size_t k, std::size_t m) { return m > k && adjacent_[order_[k] * n + order_[m]] != 0; };
+    std::size_t elimination = 0, update = 0, substitution = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      for (std::size_t m = k + 1; m < n; ++m) {
+        if (!later(k, m)) continue;
+        const std::size_t first = update;
+        for (std::size_t j = k + 1; j < n; ++j)
+          if (later(k, j)) updates_[update++] = {index(m * n + j), index(k * n + j)};
+        eliminations_[elimination++] = {index(m * n + k), first, update};
+      }
+      elimination_end_[k] = elimination;
+    }
+    // Forward substitution (L, unit diagonal) in the solver's numbering: x[m] -= L(m,k) x[k].
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t m = k + 1; m < n; ++m)
+        if (later(k, m)) substitutions_[substitution++] = {index(order_[m]), index(order_[k]), index(m * n + k), false};
+    // Backward substitution (U): x[k] -= U(k,m) x[m] for the later m, then x[k] /= U(k,k).
+    for (std::size_t k = n; k-- > 0;) {
+      for (std::size_t m = k + 1; m < n; ++m)
+        if (later(k, m)) substitutions_[substitution++] = {index(order_[k]), index(order_[m]), index(k * n + m), false};
+      substitutions_[substitution++] = {index(order_[k]), index(k), 0, true};
+    }
+    substitutions_end_ = substitution;
+    std::size_t next = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+      row_start_[r] = next;
+      for (std::size_t c = 0; c < n; ++c)
+        if (adjacent_[r * n + c]) row_slots_[next++] = {index(c), index(position_[r] * n + position_[c])};
+    }
+    row_start_[n] = next;
+  }
+
+  void factor() {
+    const std::size_t n = n_;
+    double* const lu = lu_.data();
+    const Update* const updates = updates_.data();
+    const Elimination* e = eliminations_.data();
+    for (std::size_t k = 0; k < n; ++k) {
+      const double inverse = 1.0 / lu[k * (n + 1)];
+      inverse_pivot_[k] = inverse;
+      for (const Elimination* last = eliminations_.data() + elimination_end_[k]; e != last; ++e) {
+        double& entry = lu[e->below];
+        if (entry == 0.0) continue;  // e.g. a pinned row
+        const double l = entry * inverse;
+        entry = l;
+        for (std::size_t u = e->updates_begin; u < e->updates_end; ++u) lu[updates[u].target] -= l * lu[updates[u].source];
       }
     }
   }
 
-  /// x = A^-1 b for the A of the last compute(); x and b may not alias.
-  void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
-    const std::size_t n = n_;
-    for (std::size_t i = 0; i < n; ++i) {
-      double s = b[static_cast<Eigen::Index>(perm_[i])];
-      const double* row = &lu_[i * n];
-      for (std::size_t j = 0; j < i; ++j) s -= row[j] * x[static_cast<Eigen::Index>(j)];
-      x[static_cast<Eigen::Index>(i)] = s;
-    }
-    for (std::size_t i = n; i-- > 0;) {
-      double s = x[static_cast<Eigen::Index>(i)];
-      const double* row = &lu_[i * n];
-      for (std::size_t j = i + 1; j < n; ++j) s -= row[j] * x[static_cast<Eigen::Index>(j)];
-      x[static_cast<Eigen::Index>(i)] = s / row[i];
+  /// x = W^-1 b for the W of the last factor(), both in the solver's numbering; x and b may not
+  /// alias.
+  void solve(const double* b, double* x) const {
+    const double* const lu = lu_.data();
+    std::copy(b, b + n_, x);
+    for (const Substitution* s = substitutions_.data(); s != substitutions_.data() + substitutions_end_; ++s) {
+      if (s->divide) {
+        x[s->target] *= inverse_pivot_[s->source];
+      } else {
+        x[s->target] -= lu[s->flat] * x[s->source];
+      }
     }
   }
 
  private:
+  static std::uint32_t index(std::size_t i) { return static_cast<std::uint32_t>(i); }
+  // One column entry of L: lu[below] /= the pivot, then that row's updates.
+  struct Elimination {
+    std::uint32_t below;
+    std::size_t updates_begin, updates_end;
+  };
+  struct Update {
+    std::uint32_t target, source;  // lu[target] -= l * lu[source]
+  };
+  struct Substitution {
+    std::uint32_t target, source, flat;  // x[target] -= lu[flat] * x[source], or x[target] /= pivot `source`
+    bool divide;
+  };
+
   std::size_t n_;
-  std::vector<double> lu_;  // row-major: U on and above the diagonal, L (unit diagonal) below
-  std::vector<std::size_t> perm_;
+  std::vector<double> lu_;             // row-major, elimination order: U on and above the diagonal, L below
+  std::vector<std::size_t> position_;  // solver's unknown -> elimination position
+  std::vector<std::size_t> order_;     // elimination position -> solver's unknown
+  std::vector<Elimination> eliminations_;
+  std::vector<std::size_t> elimination_end_;  // per position k: the end of its column's eliminations
+  std::vector<double> inverse_pivot_;         // per position, from the last factor()
+  std::vector<Update> updates_;
+  std::vector<Substitution> substitutions_;
+  std::size_t substitutions_end_ = 0;
+  std::vector<std::size_t> row_start_;  // per unknown (solver's numbering): its range of row_slots_
+  std::vector<Slot> row_slots_;
+  std::vector<char> adjacent_, eliminated_;  // set_pattern()'s scratch
 };
 
 }  // namespace plant

@@ -26,7 +26,10 @@ const ComponentType kType{
 
 const ComponentType& Tank::type_info() { return kType; }
 
-Tank::Tank(std::string name, std::vector<double> values) : Component(kType, std::move(name), std::move(values)) {}
+Tank::Tank(std::string name, std::vector<double> values)
+    : Component(kType, std::move(name), std::move(values)) {
+  declare_hooks(0u);
+}
 
 void Tank::fix_pressures(CircuitState& state) const {
   state.pressure[static_cast<std::size_t>(node(kPort).index)] = parameter(kPressure);
