@@ -6,6 +6,7 @@ namespace control {
 
 namespace {
 constexpr auto kBatchPeriod = std::chrono::milliseconds(50);
+constexpr auto kSnapshotPeriod = std::chrono::milliseconds(20);  // 50 Hz
 constexpr std::size_t kMaxBacklog = 4 << 20;        // bytes per client
 constexpr std::size_t kMaxFramesPerBatch = 4096;    // the rest waits for the next batch
 
@@ -80,12 +81,20 @@ std::size_t EventHub::clients() const {
 }
 
 void EventHub::run() {
+  auto next_batch = std::chrono::steady_clock::now();
   std::unique_lock lk(mu_);
   while (!stopping_) {
     lk.unlock();
-    if (bridge_.attached()) batch();
+    if (bridge_.attached()) {
+      // The scheduler takes a node snapshot only when asked: at most kSnapshotPeriod apart.
+      bridge_.request_snapshot();
+      if (const auto now = std::chrono::steady_clock::now(); now >= next_batch) {
+        next_batch = now + kBatchPeriod;
+        batch();
+      }
+    }
     lk.lock();
-    stop_cv_.wait_for(lk, kBatchPeriod, [this] { return stopping_; });
+    stop_cv_.wait_for(lk, kSnapshotPeriod, [this] { return stopping_; });
   }
 }
 
