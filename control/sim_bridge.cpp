@@ -488,7 +488,7 @@ void SimBridge::refresh_pdo_maps() {
 std::uint64_t SimBridge::pdo_maps(std::vector<std::vector<PdoMap>>& out) const {
   std::lock_guard lk(pub_mu_);
   out = pdo_published_;
-  return pdo_version_;
+  return pdo_version_.load();
 }
 
 void SimBridge::sample_signals(std::int64_t now) {

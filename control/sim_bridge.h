@@ -120,6 +120,7 @@ class SimBridge final : public scenario::RunExtension {
   std::uint64_t node_version() const { return node_version_.load(); }
   /// PDO mappings per node as last published; returns their version.
   std::uint64_t pdo_maps(std::vector<std::vector<PdoMap>>& out) const;
+  std::uint64_t pdo_version() const { return pdo_version_.load(); }
 
   /// Frame and signal capture runs while a stream listens (counted: several streams may).
   void add_listener();
@@ -202,7 +203,7 @@ class SimBridge final : public scenario::RunExtension {
 
   // PDO maps.
   std::vector<std::vector<PdoMap>> pdo_work_, pdo_published_;
-  std::uint64_t pdo_version_ = 0;
+  std::atomic<std::uint64_t> pdo_version_{0};
   bool pdo_dirty_ = false;
 
   // Capture.
