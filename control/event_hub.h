@@ -1,7 +1,10 @@
 // The live stream's fan-out (server side): one thread drains what the scheduler captured every
 // 50 ms, decodes the frames once, and hands each stream client its server-sent events (frames,
 // nodes on change, signals at the client's rate, clock, dropped). A client's backlog is bounded:
-// a client that cannot keep up loses frames, counted in a "dropped" event.
+// a client that cannot keep up loses frames, counted in a "dropped" event; so do frames the
+// scheduler could not capture because the hub was behind (full virtual speed carries more frames
+// than the hub decodes). Every 20 ms it asks the scheduler for a node snapshot (the scheduler
+// takes none on its own while the clock runs).
 #pragma once
 
 #include <condition_variable>
@@ -76,6 +79,7 @@ class EventHub {
   // Hub thread state.
   std::uint64_t node_version_ = ~0ULL, pdo_version_ = ~0ULL, dropped_seen_ = 0;
   std::vector<NodeStatus> nodes_;
+  std::vector<CapturedFrame> captured_;  ///< one batch's frames (sized to the ring once)
   std::vector<std::vector<PdoMap>> maps_;
   std::string nodes_event_;
   ClockState last_clock_;

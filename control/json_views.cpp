@@ -69,6 +69,26 @@ json device_json(const NodeStatus& s) {
       } else {
         d["last_transition"] = nullptr;
       }
+      if (s.channel_count > 0) {  // the MD2: every channel's state machine (channel 1 is the above)
+        json channels = json::array();
+        for (std::size_t c = 0; c < s.channel_count; ++c) {
+          const auto& ch = s.channels[c];
+          json j = {{"channel", c + 1},
+                    {"state", std::string(ch.state)},
+                    {"control_word", ch.control_word},
+                    {"status_word", ch.status_word}};
+          if (ch.transitions > 0) {
+            j["last_transition"] = {{"from", std::string(ch.transition_from)},
+                                    {"to", std::string(ch.transition_to)},
+                                    {"control_word", ch.transition_control_word},
+                                    {"t_us", ch.transition_t_us}};
+          } else {
+            j["last_transition"] = nullptr;
+          }
+          channels.push_back(std::move(j));
+        }
+        d["channels"] = std::move(channels);
+      }
       break;
     case devices::ProfileStatus::Profile::Vtvpcd: {
       d["state"] = std::string(p.state);

@@ -3,6 +3,7 @@
 #include <thread>
 
 #include "devices/canopen/emergency.h"
+#include "devices/md2/md2.h"
 #include "engine/scenario.h"
 #include "engine/world.h"
 #include "sim/scheduler.h"
@@ -13,7 +14,6 @@ namespace {
 constexpr int kMaxPdos = 8;  // per direction and node: what the decoder and the dashboard show
 constexpr sim::Duration kSdoTimeout = sim::milliseconds(1000);
 constexpr auto kSdoWallTimeout = std::chrono::seconds(3);
-constexpr std::int64_t kPdoRefreshUs = 100000;
 
 bool same_profile(const devices::ProfileStatus& a, const devices::ProfileStatus& b) {
   return a.profile == b.profile && a.state == b.state && a.control_word == b.control_word &&
@@ -29,24 +29,28 @@ bool same_map(const PdoMap& a, const PdoMap& b) {
 }  // namespace
 
 bool NodeStatus::same_as(const NodeStatus& o) const {
-  return powered == o.powered && nmt == o.nmt && node_id == o.node_id && error_register == o.error_register &&
-         emcy_count == o.emcy_count && same_profile(profile, o.profile);
+  if (!(powered == o.powered && nmt == o.nmt && node_id == o.node_id && error_register == o.error_register &&
+        emcy_count == o.emcy_count && same_profile(profile, o.profile) && channel_count == o.channel_count))
+    return false;
+  for (std::size_t c = 0; c < channel_count; ++c)
+    if (!(channels[c] == o.channels[c])) return false;
+  return true;
 }
 
 /// Sees every frame on one bus (scheduler thread): EMCY history always, the capture ring while
-/// a stream listens.
+/// a stream listens (a plain copy; the ring is published once per tick).
 class SimBridge::BusTap final : public sim::FrameTap {
  public:
   BusTap(SimBridge* bridge, std::size_t bus) : bridge_(bridge), bus_(bus) {}
   void on_bus_frame(std::string_view, const sim::CanFrame& f, sim::Time now) override {
-    if (bridge_->listeners_.load(std::memory_order_relaxed) > 0) {
+    if (bridge_->capturing_) {
       if (auto* slot = bridge_->frames_.claim()) {
         slot->t_us = now.time_since_epoch().count();
         slot->bus = static_cast<std::uint8_t>(bus_);
         slot->frame = f;
         bridge_->frames_.commit();
       } else {
-        bridge_->frames_dropped_.fetch_add(1, std::memory_order_relaxed);
+        ++bridge_->dropped_;
       }
     }
     if (!f.extended && !f.rtr && (f.id & 0x780) == 0x080 && (f.id & 0x7F) != 0) bridge_->record_emcy(bus_, f, now);
@@ -100,14 +104,16 @@ void SimBridge::attach(const scenario::RunContext& context) {
     auto& bus = *world.buses()[b];
     taps_.push_back(std::make_unique<BusTap>(this, b));
     bus.add_tap(taps_.back().get());
-    masters_.push_back(std::make_unique<BusMaster>(bus, ctx_->scheduler));
   }
+  masters_.resize(world.buses().size());
   sdo_jobs_.resize(world.buses().size());
   node_by_id_.assign(world.buses().size(), {});
   for (auto& t : node_by_id_) t.fill(-1);
 
   const auto n = world.nodes().size();
   work_.resize(n);
+  md2_.assign(n, nullptr);
+  for (std::size_t i = 0; i < n; ++i) md2_[i] = dynamic_cast<md2::Md2*>(world.nodes()[i].device.get());
   pdo_work_.assign(n, std::vector<PdoMap>(2 * kMaxPdos));
   for (const auto& node : world.nodes())
     for (const auto& p : node.ports) signals_.push_back({node.spec->name + "." + p.name, p.unit, p.value});
@@ -115,7 +121,7 @@ void SimBridge::attach(const scenario::RunContext& context) {
     for (const auto& p : plant->ports()) signals_.push_back({p.name, p.unit, p.value});
   signal_rows_ = std::make_unique<SpscRing<SignalRow>>(512, SignalRow{0, std::vector<double>(signals_.size())});
 
-  publish_nodes();
+  publish_nodes(now_us_.load(std::memory_order_relaxed), true);
   refresh_pdo_maps();
   attached_ = true;
 }
@@ -130,6 +136,8 @@ void SimBridge::detach() {
     if (job) job->promise->set_value({SdoOutcome::Kind::Failed, {}, 0, "the run has ended"});
     job.reset();
   }
+  sdo_active_ = 0;
+  publish_capture();  // what the last ticks captured still reaches the stream
   wake_.notify_all();
 }
 
@@ -138,19 +146,20 @@ bool SimBridge::post(Command command) {
     std::lock_guard lk(queue_mu_);
     if (finished_) return false;
     queue_.push_back(std::move(command));
-    pending_.store(true, std::memory_order_release);
+    wanted_.fetch_or(kWantCommands, std::memory_order_release);
   }
   wake_.notify_all();
   return true;
 }
 
 bool SimBridge::drain_commands() {
-  if (!pending_.load(std::memory_order_acquire)) return false;
   {
     std::unique_lock lk(queue_mu_, std::try_to_lock);
-    if (!lk) return false;  // a server thread is queueing: next boundary
+    if (!lk) {  // a server thread is queueing: next boundary
+      wanted_.fetch_or(kWantCommands, std::memory_order_relaxed);
+      return false;
+    }
     running_.swap(queue_);
-    pending_.store(false, std::memory_order_relaxed);
   }
   for (auto& c : running_) c(*ctx_);
   running_.clear();
@@ -192,14 +201,44 @@ bool SimBridge::before_tick(bool end_reached) {
 }
 
 void SimBridge::service() {
-  now_us_.store(ctx_->scheduler.now().time_since_epoch().count(), std::memory_order_relaxed);
-  if (drain_commands()) ctx_->scheduler.deliver_all();  // what the commands sent arrives now, paused or not
-  finish_sdo_jobs();
-  publish_nodes();
-  if (listeners_.load(std::memory_order_relaxed) > 0) {
-    sample_signals();
-    if (now_us_.load(std::memory_order_relaxed) >= next_pdo_refresh_us_) refresh_pdo_maps();
+  const std::int64_t now = ctx_->scheduler.now().time_since_epoch().count();
+  bool snapshot = false;
+  if (wanted_.load(std::memory_order_relaxed) != 0) {
+    const unsigned wanted = wanted_.exchange(0, std::memory_order_acquire);
+    if (wanted & kWantCommands) {
+      if (drain_commands()) {
+        ctx_->scheduler.deliver_all();  // what the commands sent arrives now, paused or not
+        snapshot = true;                // and a reader sees what they changed
+      }
+    }
+    snapshot |= (wanted & kWantSnapshot) != 0;
   }
+  // A clock that stands (paused, nothing left to step) publishes what it stands at, waiting for
+  // the lock if a reader holds it (nothing runs that could be late), so a reader that sees the
+  // clock stand sees the nodes as they are.
+  const bool standing = !realtime_ && paused_.load(std::memory_order_relaxed) &&
+                        budget_.load(std::memory_order_relaxed) == 0 && sdo_active_ == 0;
+  if (sdo_active_ > 0) finish_sdo_jobs();
+  capturing_ = listeners_.load(std::memory_order_relaxed) > 0;
+  if (snapshot || standing) {
+    publish_nodes(now, standing);
+    // PDO mappings (for decoding the stream) change by SDO: re-read them with the snapshot.
+    if (capturing_ && snapshot) refresh_pdo_maps();
+  }
+  if (capturing_) {
+    if (now >= next_sample_us_) sample_signals(now);
+    publish_capture();
+  } else if (frames_.unpublished()) {
+    publish_capture();
+  }
+  // Last: a reader that sees the new time sees the snapshot taken at it.
+  now_us_.store(now, std::memory_order_release);
+}
+
+void SimBridge::publish_capture() {
+  frames_.publish();
+  if (signal_rows_) signal_rows_->publish();
+  frames_dropped_.store(dropped_, std::memory_order_relaxed);
 }
 
 void SimBridge::pace() {
@@ -226,13 +265,13 @@ void SimBridge::pace() {
 
 void SimBridge::wait_for_work(std::chrono::steady_clock::time_point until) {
   std::unique_lock lk(queue_mu_);
-  wake_.wait_until(lk, until, [this] { return pending_.load(std::memory_order_relaxed) || finished_.load(); });
+  wake_.wait_until(lk, until, [this] { return (wanted_.load(std::memory_order_relaxed) & kWantCommands) || finished_.load(); });
 }
 
 ClockState SimBridge::clock() const {
   ClockState c;
   c.realtime = realtime_;
-  c.t_us = now_us_.load(std::memory_order_relaxed);
+  c.t_us = now_us_.load(std::memory_order_acquire);
   c.tick_us = tick_us_.load(std::memory_order_relaxed);
   c.run_ticks_left = budget_.load();
   c.paused = paused_.load() && c.run_ticks_left == 0;
@@ -277,28 +316,31 @@ std::future<SdoOutcome> SimBridge::sdo(std::size_t node, bool upload, std::uint1
       promise->set_value({SdoOutcome::Kind::Busy, {}, 0, "another SDO transfer is running on this bus"});
       return;
     }
-    auto& client = masters_[bus]->sdo;
+    auto& client = master(bus).sdo;
     client.reset();
     const auto id = n.device->node().node_id();
     if (upload) client.start_upload(id, index, sub, c.scheduler.now(), kSdoTimeout);
     else client.start_download(id, index, sub, data, c.scheduler.now(), kSdoTimeout);
     sdo_jobs_[bus] = std::make_unique<SdoJob>(SdoJob{promise, std::chrono::steady_clock::now() + kSdoWallTimeout});
+    ++sdo_active_;
   });
   if (!queued) promise->set_value({SdoOutcome::Kind::Failed, {}, 0, "the run has ended"});
   return future;
 }
 
-bool SimBridge::sdo_in_flight() const {
-  for (const auto& job : sdo_jobs_)
-    if (job) return true;
-  return false;
+bool SimBridge::sdo_in_flight() const { return sdo_active_ > 0; }
+
+SimBridge::BusMaster& SimBridge::master(std::size_t bus) {
+  auto& m = masters_[bus];
+  if (!m) m = std::make_unique<BusMaster>(*ctx_->world.buses()[bus], ctx_->scheduler);
+  return *m;
 }
 
 void SimBridge::finish_sdo_jobs() {
   for (std::size_t b = 0; b < sdo_jobs_.size(); ++b) {
     auto& job = sdo_jobs_[b];
     if (!job) continue;
-    auto& client = masters_[b]->sdo;
+    auto& client = master(b).sdo;
     client.poll(ctx_->scheduler.now());
     SdoOutcome out;
     switch (client.state()) {
@@ -330,6 +372,7 @@ void SimBridge::finish_sdo_jobs() {
     client.reset();
     job->promise->set_value(std::move(out));
     job.reset();
+    --sdo_active_;
   }
 }
 
@@ -345,9 +388,8 @@ void SimBridge::record_emcy(std::size_t bus, const sim::CanFrame& f, sim::Time n
   ++st.emcy_count;
 }
 
-void SimBridge::publish_nodes() {
+void SimBridge::publish_nodes(std::int64_t now, bool wait) {
   auto& nodes = ctx_->world.nodes();
-  const auto now = now_us_.load(std::memory_order_relaxed);
   bool ids_changed = false;
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     auto& dev = *nodes[i].device;
@@ -361,6 +403,21 @@ void SimBridge::publish_nodes() {
     const auto before = st.profile.transitions;
     st.profile = dev.profile_status();
     if (st.profile.transitions != before) st.transition_t_us = now;
+    if (auto* md2 = md2_[i]) {
+      st.channel_count = static_cast<std::uint8_t>(std::min<int>(md2->options().channels, NodeStatus::kMaxChannels));
+      for (std::size_t c = 0; c < st.channel_count; ++c) {
+        const auto p = md2->md2_channel(static_cast<int>(c) + 1).control().profile_status();
+        auto& ch = st.channels[c];
+        if (p.transitions != ch.transitions) ch.transition_t_us = now;
+        ch.state = p.state;
+        ch.control_word = p.control_word;
+        ch.status_word = p.status_word;
+        ch.transitions = p.transitions;
+        ch.transition_from = p.transition_from;
+        ch.transition_to = p.transition_to;
+        ch.transition_control_word = p.transition_control_word;
+      }
+    }
   }
   if (ids_changed) {
     for (auto& t : node_by_id_) t.fill(-1);
@@ -374,8 +431,9 @@ void SimBridge::publish_nodes() {
     for (std::size_t i = 0; !dirty_ && i < work_.size(); ++i) dirty_ = !work_[i].same_as(last_[i]);
   }
   if (!dirty_) return;
-  std::unique_lock lk(pub_mu_, std::try_to_lock);
-  if (!lk) return;  // a reader holds it: publish at the next boundary
+  std::unique_lock lk(pub_mu_, std::defer_lock);
+  if (wait) lk.lock();
+  else if (!lk.try_lock()) return;  // a reader holds it: publish at the next snapshot
   published_ = work_;
   last_ = work_;
   node_version_.fetch_add(1);
@@ -389,7 +447,6 @@ std::uint64_t SimBridge::nodes(std::vector<NodeStatus>& out) const {
 }
 
 void SimBridge::refresh_pdo_maps() {
-  next_pdo_refresh_us_ = now_us_.load(std::memory_order_relaxed) + kPdoRefreshUs;
   auto& nodes = ctx_->world.nodes();
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const auto& od = nodes[i].device->node().od();
@@ -431,12 +488,10 @@ void SimBridge::refresh_pdo_maps() {
 std::uint64_t SimBridge::pdo_maps(std::vector<std::vector<PdoMap>>& out) const {
   std::lock_guard lk(pub_mu_);
   out = pdo_published_;
-  return pdo_version_;
+  return pdo_version_.load();
 }
 
-void SimBridge::sample_signals() {
-  const auto now = now_us_.load(std::memory_order_relaxed);
-  if (now < next_sample_us_) return;
+void SimBridge::sample_signals(std::int64_t now) {
   next_sample_us_ = now + signal_period_us_;
   auto* row = signal_rows_->claim();
   if (!row) return;  // the stream is behind: a gap in the plot, counted nowhere else
@@ -445,10 +500,11 @@ void SimBridge::sample_signals() {
   signal_rows_->commit();
 }
 
-void SimBridge::send_frame(std::size_t bus, const sim::CanFrame& frame) { masters_[bus]->send(frame); }
+void SimBridge::send_frame(std::size_t bus, const sim::CanFrame& frame) { master(bus).send(frame); }
 
 void SimBridge::add_listener() {
-  if (listeners_.fetch_add(1) == 0) post([this](const scenario::RunContext&) { refresh_pdo_maps(); });
+  if (listeners_.fetch_add(1) == 0)
+    post([this](const scenario::RunContext&) { refresh_pdo_maps(); });
 }
 void SimBridge::remove_listener() { listeners_.fetch_sub(1); }
 

@@ -1,9 +1,16 @@
 // The scheduler's side of the live control plane. It is the run's RunExtension: between ticks,
 // on the scheduler's thread, it runs the commands the server threads queued (SDO, NMT, frames,
 // faults, inputs, clock), gates virtual time (pause, step, run N ms, pacing), and publishes what
-// the server threads read: node status (copied when it changed), captured frames and signal
-// samples (lock-free rings, only while a stream client listens), PDO mappings. It never blocks
-// while the clock runs (try_lock; a full ring drops and counts) and allocates nothing per frame.
+// the server threads read: node status snapshots, captured frames and signal samples (lock-free
+// rings, only while a stream client listens), PDO mappings.
+//
+// What it costs the scheduler per tick while the clock runs: one relaxed load of the "wanted"
+// word (commands queued, a snapshot asked for), one of the listener count, and with a listener
+// the rings' publish and a time compare for sampling. Node snapshots are taken when the event
+// hub asks (at most 50 times a wall second) and whenever the clock stands, not every tick. A
+// captured frame is a plain copy into a preallocated ring. It never blocks while the clock runs
+// (try_lock; a full ring drops and counts), makes no system call and allocates nothing per tick
+// or frame (tests/control/bridge_allocation_test.cpp).
 #pragma once
 
 #include <atomic>
@@ -23,6 +30,10 @@
 #include "engine/run_extension.h"
 #include "engine/sdo_client.h"
 #include "sim/bus.h"
+
+namespace md2 {
+class Md2;
+}
 
 namespace control {
 
@@ -102,17 +113,22 @@ class SimBridge final : public scenario::RunExtension {
   /// Runs `ticks` ticks (at the current speed), then stays paused.
   bool run_ticks(std::uint64_t ticks);
 
+  /// Asks for a node snapshot at the next tick boundary (the event hub, at most 50 Hz). Any thread.
+  void request_snapshot() { wanted_.fetch_or(kWantSnapshot, std::memory_order_relaxed); }
   /// Node status as last published (scenario order); returns its version (changes on change).
   std::uint64_t nodes(std::vector<NodeStatus>& out) const;
   std::uint64_t node_version() const { return node_version_.load(); }
   /// PDO mappings per node as last published; returns their version.
   std::uint64_t pdo_maps(std::vector<std::vector<PdoMap>>& out) const;
+  std::uint64_t pdo_version() const { return pdo_version_.load(); }
 
   /// Frame and signal capture runs while a stream listens (counted: several streams may).
   void add_listener();
   void remove_listener();
   SpscRing<CapturedFrame>& frames() { return frames_; }
-  std::uint64_t frames_dropped() const { return frames_dropped_.load(); }
+  /// Frames not captured because the ring was full (the hub decodes fewer than the bus carries,
+  /// e.g. at full virtual speed): a running total.
+  std::uint64_t frames_dropped() const { return frames_dropped_.load(std::memory_order_relaxed); }
   SpscRing<SignalRow>& signal_rows() { return *signal_rows_; }
   /// Fixed at attach.
   const std::vector<SignalInfo>& signals() const { return signals_; }
@@ -138,9 +154,11 @@ class SimBridge final : public scenario::RunExtension {
 
   void service();
   bool drain_commands();
-  void publish_nodes();
+  void publish_nodes(std::int64_t now_us, bool wait);
+  void publish_capture();
+  BusMaster& master(std::size_t bus);
   void refresh_pdo_maps();
-  void sample_signals();
+  void sample_signals(std::int64_t now_us);
   void finish_sdo_jobs();
   bool sdo_in_flight() const;
   void pace();
@@ -154,11 +172,14 @@ class SimBridge final : public scenario::RunExtension {
   bool realtime_ = false;
   std::atomic<bool> attached_{false}, finished_{false};
 
+  // What the server threads want from the scheduler: read once per tick (relaxed).
+  static constexpr unsigned kWantCommands = 1, kWantSnapshot = 2;
+  std::atomic<unsigned> wanted_{0};
+
   // Commands.
   mutable std::mutex queue_mu_;
   std::condition_variable wake_;
   std::vector<Command> queue_, running_;
-  std::atomic<bool> pending_{false};
 
   // Clock: changed only by commands (scheduler thread), read by clock() from any thread.
   std::atomic<bool> paused_{false};
@@ -178,16 +199,18 @@ class SimBridge final : public scenario::RunExtension {
   std::atomic<std::uint64_t> node_version_{0};
   bool dirty_ = false;
   std::vector<std::array<int, 128>> node_by_id_;  ///< per bus: node-ID → node index (-1)
+  std::vector<md2::Md2*> md2_;                    ///< per node: the MD2 (its channels), else null
 
   // PDO maps.
   std::vector<std::vector<PdoMap>> pdo_work_, pdo_published_;
-  std::uint64_t pdo_version_ = 0;
-  std::int64_t next_pdo_refresh_us_ = 0;
+  std::atomic<std::uint64_t> pdo_version_{0};
   bool pdo_dirty_ = false;
 
   // Capture.
   std::atomic<int> listeners_{0};
+  bool capturing_ = false;  ///< listeners_ > 0 as of this tick (read per frame: scheduler only)
   SpscRing<CapturedFrame> frames_{16384};
+  std::uint64_t dropped_ = 0;  ///< scheduler's count, published to frames_dropped_ per tick
   std::atomic<std::uint64_t> frames_dropped_{0};
   std::vector<SignalInfo> signals_;
   std::unique_ptr<SpscRing<SignalRow>> signal_rows_;
@@ -195,8 +218,11 @@ class SimBridge final : public scenario::RunExtension {
   std::int64_t next_sample_us_ = 0;
 
   std::vector<std::unique_ptr<BusTap>> taps_;
+  /// The control plane's endpoints, attached to a bus on first use (an endpoint costs the bus
+  /// work per frame, so a dashboard that only watches adds none).
   std::vector<std::unique_ptr<BusMaster>> masters_;
   std::vector<std::unique_ptr<SdoJob>> sdo_jobs_;  ///< at most one per bus
+  int sdo_active_ = 0;
 
   std::vector<LiveFault> live_faults_;
   int fault_ids_ = 0;

@@ -2,12 +2,23 @@
 
 export type NmtState = 'INITIALISING' | 'PRE-OPERATIONAL' | 'OPERATIONAL' | 'STOPPED' | 'OFF';
 
+export interface Dsp408Transition { from: string; to: string; control_word: number; t_us: number }
+/** One channel of a multi-channel DSP 408 device (the MD2). */
+export interface Dsp408Channel {
+  channel: number;
+  state: string;
+  control_word: number;
+  status_word: number;
+  last_transition: Dsp408Transition | null;
+}
 export interface Dsp408State {
   profile: 'dsp408';
   state: string;
   control_word: number;
   status_word: number;
-  last_transition: { from: string; to: string; control_word: number; t_us: number } | null;
+  last_transition: Dsp408Transition | null;
+  /** The MD2: every channel (channel 1 is the fields above). */
+  channels?: Dsp408Channel[];
 }
 export interface VtvpcdState { profile: 'vtvpcd'; state: string; faults: string[] }
 export interface Cia406State { profile: 'cia406'; operating_status: number; alarms: number; warnings: number }

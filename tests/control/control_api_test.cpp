@@ -107,6 +107,34 @@ TEST_F(ControlApi, NodesShowNmtDeviceStateAndErrorRegister) {
   EXPECT_EQ(status(p().http().Get("/api/nodes/nope")), 404);
 }
 
+TEST_F(ControlApi, Md2ShowsEveryChannelsStateMachine) {
+  start_all();
+  auto md2 = node("md2");
+  ASSERT_TRUE(md2["device"]["channels"].is_array()) << md2.dump();
+  const auto& channels = md2["device"]["channels"];
+  ASSERT_GE(channels.size(), 2u);
+  EXPECT_EQ(channels[0]["channel"], 1);
+  EXPECT_EQ(channels[1]["channel"], 2);
+  EXPECT_EQ(channels[0]["state"], md2["device"]["state"]);  // channel 1 is the device's own fields
+  EXPECT_EQ(channels[0]["status_word"], md2["device"]["status_word"]);
+  const auto ch1_cw = channels[0]["control_word"];
+  // Channel 2's control word is 6040h + 800h: writing it moves channel 2 only.
+  auto r = p().post("/api/nodes/md2/sdo", {{"index", 0x6840}, {"sub", 0}, {"value", 7}});
+  ASSERT_EQ(status(r), 200) << (r ? r->body : "");
+  ASSERT_EQ(LivePlant::json_of(r)["ok"], true) << r->body;
+  p().run_ms(30);
+  md2 = node("md2");
+  const auto& after = md2["device"]["channels"];
+  EXPECT_EQ(after[1]["control_word"], 7) << md2.dump();
+  EXPECT_EQ(after[1]["state"], "DEVICE_MODE_ACTIVE") << md2.dump();
+  ASSERT_TRUE(after[1]["last_transition"].is_object());
+  EXPECT_EQ(after[1]["last_transition"]["control_word"], 7);
+  EXPECT_EQ(after[0]["control_word"], ch1_cw);
+  EXPECT_EQ(md2["device"]["control_word"], ch1_cw);
+  // A single-channel valve has no channel list.
+  EXPECT_FALSE(node("dsv")["device"].contains("channels"));
+}
+
 TEST_F(ControlApi, SdoWriteOfTheDsvControlWordDrivesTheStateMachineAndShowsInTheStream) {
   start_all();
   // A stream client first, so the frames of the write are captured.

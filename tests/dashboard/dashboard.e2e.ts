@@ -249,6 +249,37 @@ test('"magnet lost" on the HLT 1100: the decoded EMCY, then the fault cleared', 
   await page.waitForFunction(() => document.querySelectorAll('[data-testid=active-faults] [data-testid^=active-fault-]').length === 0);
 });
 
+test('a heartbeat consumer (exercise 3): the link dropped, EMCY 8130h decoded, the link back, EMCY 0000h', async () => {
+  const odWrite = async (node: string, filter: string, id: string, value: string) => {
+    await byTestId(`node-row-${node}`).click();
+    await byTestId('od-filter').fill(filter);
+    await byTestId(`od-input-${id}`).fill(value);
+    await byTestId(`od-write-${id}`).click();
+    await page.waitForFunction((i) => new RegExp(`${i.replace('-', ':')}.*done`).test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''), id);
+  };
+  await odWrite('dsv', '1017', '1017-00', '100');              // the DSV's heartbeat every 100 ms
+  await odWrite('wdga', '1016', '1016-01', '0x000201F4');      // the WDGA watches node 2, 500 ms
+  await byTestId('od-filter').fill('');
+  await page.waitForTimeout(300);  // monitoring starts with the DSV's next heartbeat
+  // Break the link: drop 702h on the wire.
+  await byTestId('wire-match').fill('0x702');
+  await byTestId('wire-action').selectOption('drop');
+  await byTestId('wire-inject').click();
+  await page.waitForSelector('[data-testid=active-faults] [data-testid^=active-fault-]');
+  await page.waitForFunction(() => /^8130h/.test(document.querySelector('[data-testid=emcy-wdga]')?.textContent ?? ''));
+  await page.waitForFunction(() => (parseInt((document.querySelector('[data-testid=errreg-wdga]')?.textContent ?? '0x0').slice(2), 16) & 0x10) !== 0);
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=EMCY] td.decoded')]
+    .some((td) => /8130/.test(td.textContent ?? '')));
+  await shot('heartbeat-consumer-fault', 'trace-section');
+  // Recover: the next heartbeat reaches the WDGA, which sends the error reset.
+  await page.locator('[data-testid^=fault-clear-]').first().click();
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid=active-faults] [data-testid^=active-fault-]').length === 0);
+  await page.waitForFunction(() => /^0000h/.test(document.querySelector('[data-testid=emcy-wdga]')?.textContent ?? ''));
+  await page.waitForFunction(() => document.querySelector('[data-testid=errreg-wdga]')?.textContent === '0x00');
+  await odWrite('wdga', '1016', '1016-01', '0');  // stop watching (the DSV's heartbeat goes on)
+  await byTestId('od-filter').fill('');
+});
+
 test('the trace filters by node and service and exports what it shows as a candump log', async () => {
   // Only the HLT 1100 (node 5): every row shown is node 5 or a broadcast.
   for (const id of [63, 2, 3, 127]) await byTestId(`trace-node-${id}`).uncheck();

@@ -2,6 +2,7 @@
 // transition and the control word that caused it, control-word buttons, and the EMCY history.
 import { CW_PRESETS, describeControlWord } from '../control_word';
 import { button, el, formatTime, hex } from '../dom';
+import { channelLine, channelsOf } from '../dsp408_channels';
 import { DSP408_DIAGRAM, markedTransition, NMT_DIAGRAM } from '../state_diagrams';
 import type { NodeInfo } from '../types';
 import { renderDiagram } from './diagram_view';
@@ -37,6 +38,12 @@ export function renderNodeDetail(
         el('div', { 'data-testid': 'device-last-transition' }, caption),
         el('div', { 'data-testid': 'device-words' },
           `State ${d.state}; control word ${describeControlWord(d.control_word)}; status word 0x${hex(d.status_word, 4)}`))));
+    const channels = channelsOf(d);
+    if (channels.length) {
+      parts.push(el('p', {}, 'The diagram shows channel 1. Every channel:'),
+        el('ul', { class: 'channels', 'data-testid': 'device-channels' },
+          ...channels.map((c) => el('li', { 'data-testid': `device-channel-${c.channel}` }, channelLine(c)))));
+    }
   } else if (d.profile === 'vtvpcd') {
     parts.push(el('p', { 'data-testid': 'device-words' }, `VT-VPCD state ${d.state}; active faults: ${d.faults.length ? d.faults.join(', ') : 'none'}`));
   } else if (d.profile === 'cia406') {

@@ -1,12 +1,13 @@
 // The node table: one row per node with its live NMT state, device state and error register;
 // clicking a row selects the node for the diagrams and the object-dictionary browser.
 import { el, hex } from '../dom';
+import { dsp408Summary } from '../dsp408_channels';
 import type { NodeInfo, ScenarioNode } from '../types';
 
 export function deviceSummary(n: NodeInfo): string {
   const d = n.device;
   switch (d.profile) {
-    case 'dsp408': return `${d.state} (sw 0x${hex(d.status_word, 4)})`;
+    case 'dsp408': return dsp408Summary(d);
     case 'vtvpcd': return d.faults.length ? `${d.state}; faults: ${d.faults.join(', ')}` : d.state;
     case 'cia406': return `status 0x${hex(d.operating_status, 4)}, alarms 0x${hex(d.alarms, 4)}, warnings 0x${hex(d.warnings, 4)}`;
     default: return '—';
