@@ -68,7 +68,7 @@ Figures run(double max_step, double seconds) {
 
 // The rigid bodies alone: the reference plant's two bodies (slider with stops and friction motor,
 // hinge with friction motor) under a changing force, one RigidBodyWorld::step per step (ODE steps
-// a body when a constraint may act: here while the slider rests on a stop).
+// a body only when its constraints have no closed form: here when the slider leaves a stop).
 struct BodyFigures {
   double ns_per_step;
   double ode_share;
