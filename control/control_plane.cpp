@@ -12,6 +12,7 @@
 #include "control/dictionary_catalog.h"
 #include "control/event_hub.h"
 #include "control/json_views.h"
+#include "control/server_thread_priority.h"
 #include "devices/canopen/nmt_state.h"
 #include "devices/canopen/sdo_abort.h"
 #include "engine/fault_injector.h"
@@ -32,6 +33,22 @@ namespace {
 constexpr std::size_t kMaxBody = 64 * 1024;
 constexpr auto kCommandTimeout = std::chrono::milliseconds(2000);
 constexpr auto kSdoWait = std::chrono::milliseconds(5000);
+
+/// httplib's worker pool, its threads at lowered priority (control/server_thread_priority.h).
+class LowPriorityPool final : public httplib::TaskQueue {
+ public:
+  explicit LowPriorityPool(std::size_t threads) : pool_(threads) {}
+  void enqueue(std::function<void()> fn) override {
+    pool_.enqueue([fn = std::move(fn)] {
+      lower_this_thread_priority();
+      fn();
+    });
+  }
+  void shutdown() override { pool_.shutdown(); }
+
+ private:
+  httplib::ThreadPool pool_;
+};
 
 /// A client error: answered as {"error": reason} with its status, nothing changed.
 struct HttpError {
@@ -825,7 +842,7 @@ std::string ControlPlane::bind() {
   if (!is_loopback(options_.address) && !options_.allow_remote)
     return "--ui " + options_.address + ": a non-loopback address needs --ui-allow-remote";
   auto& http = server_->http;
-  http.new_task_queue = [this] { return new httplib::ThreadPool(options_.max_streams + 4); };
+  http.new_task_queue = [this] { return new LowPriorityPool(options_.max_streams + 4); };
   if (options_.port == 0) {
     port_ = http.bind_to_any_port(options_.address);
     if (port_ <= 0) return "cannot listen on " + options_.address;
@@ -854,7 +871,10 @@ void ControlPlane::attach(const scenario::RunContext& context) {
                                      options_.max_streams);
   s.hub->start();
   s.routes();
-  s.listener = std::thread([this] { server_->http.listen_after_bind(); });
+  s.listener = std::thread([this] {
+    lower_this_thread_priority();
+    server_->http.listen_after_bind();
+  });
   if (options_.out) {
     std::fprintf(options_.out, "vplant: control plane at %s%s\n", url().c_str(),
                  context.scheduler.mode() == sim::ClockMode::Virtual && options_.clock.start_paused

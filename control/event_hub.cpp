@@ -1,6 +1,7 @@
 #include "control/event_hub.h"
 
 #include "control/json_views.h"
+#include "control/server_thread_priority.h"
 
 namespace control {
 
@@ -84,6 +85,7 @@ std::size_t EventHub::clients() const {
 }
 
 void EventHub::run() {
+  lower_this_thread_priority();
   auto next_batch = std::chrono::steady_clock::now();
   std::unique_lock lk(mu_);
   while (!stopping_) {
@@ -115,6 +117,17 @@ void EventHub::batch() {
   {
     std::lock_guard lk(mu_);
     clients = clients_;
+  }
+  if (clients.empty()) {
+    // Nobody listens: only keep the rings from holding stale data (nodes, maps and the clock are
+    // read afresh when a client comes, since their versions were not taken).
+    CapturedFrame f;
+    while (bridge_.frames().pop(f)) {
+    }
+    while (bridge_.signal_rows().pop(row_)) {
+    }
+    dropped_seen_ = bridge_.frames_dropped();
+    return;
   }
   // Nodes and PDO mappings first: the frames of this batch decode with them.
   bool nodes_changed = false;
