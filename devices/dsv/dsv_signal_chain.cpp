@@ -122,9 +122,11 @@ void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::Comman
   const auto sec = [this](Shared s) { return static_cast<double>(p_.shared(s)) / 1000.0; };
   a.set_enabled(on);
   b.set_enabled(on);
-  a.set_times({sec(Shared::RampAUp), sec(Shared::RampADown), sec(Shared::RampBUp), sec(Shared::RampBDown)});
+  const double a_up = sec(Shared::RampAUp), a_down = sec(Shared::RampADown);
+  const double b_up = sec(Shared::RampBUp), b_down = sec(Shared::RampBDown);
+  a.set_times({a_up, a_down, b_up, b_down});
   // Set point B (op-mode 3) is ramped on its own magnitude with the B times.
-  b.set_times({sec(Shared::RampBUp), sec(Shared::RampBDown), sec(Shared::RampBUp), sec(Shared::RampBDown)});
+  b.set_times({b_up, b_down, b_up, b_down});
 }
 
 void DsvSignalChain::open_loop(std::int8_t m, bool active, double dt, double& a, double& b) {

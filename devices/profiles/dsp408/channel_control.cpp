@@ -106,7 +106,8 @@ std::uint16_t ChannelControl::status_word() const {
 void ChannelControl::publish_status() {
   if (!status_entry_) return;
   const std::uint16_t w = status_word();
-  if (status_entry_->as<std::uint16_t>() != w) put(*status_entry_, w);
+  if (status_entry_->value.size() == 2 && canopen::decode_unsigned(status_entry_->value) == w) return;
+  put(*status_entry_, w);
 }
 
 devices::ProfileStatus ChannelControl::profile_status() const {
