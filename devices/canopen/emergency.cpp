@@ -42,10 +42,6 @@ void Emergency::bind_objects() {
   }
 }
 
-bool Emergency::active(std::uint16_t code) const {
-  return std::any_of(active_.begin(), active_.end(), [code](const ActiveError& e) { return e.code == code; });
-}
-
 std::uint8_t Emergency::error_register() const {
   std::uint8_t r = extra_bits_;
   for (const auto& e : active_) r |= e.bits;

@@ -39,7 +39,11 @@ class Emergency {
   /// (for devices whose manual defines extra EMCY frames, e.g. a per-read "error reset").
   void send_frame(std::uint16_t code, std::uint8_t error_register, Info info = {});
 
-  bool active(std::uint16_t code) const;
+  bool active(std::uint16_t code) const {
+    for (const auto& e : active_)  // inline: devices ask every tick, mostly with nothing active
+      if (e.code == code) return true;
+    return false;
+  }
   bool any_active() const { return !active_.empty(); }
   std::uint8_t error_register() const;
   /// Extra register bits the device holds itself (e.g. a latched communication bit).

@@ -14,6 +14,9 @@ ErrorControl::ErrorControl(Node& node) : node_(node) {}
 
 void ErrorControl::bind_objects() {
   auto& od = node_.od();
+  heartbeat_time_ = od.entry(kProducerHeartbeat, 0);
+  guard_time_ = od.entry(kGuardTime, 0);
+  life_time_factor_ = od.entry(kLifeTimeFactor, 0);
   if (od.entry(kProducerHeartbeat, 0)) {
     // A new period takes effect at once: first heartbeat one period after the write; 0 stops.
     od.add_observer(kProducerHeartbeat, 0, [this](OdEntry&, Origin) {
@@ -30,15 +33,12 @@ void ErrorControl::bind_objects() {
 }
 
 std::uint16_t ErrorControl::heartbeat_period_ms() const {
-  const auto* e = node_.od().entry(kProducerHeartbeat, 0);
-  return e ? e->as<std::uint16_t>() : 0;
+  return heartbeat_time_ ? heartbeat_time_->as<std::uint16_t>() : 0;
 }
 
 std::uint32_t ErrorControl::life_time_ms() const {
-  const auto* gt = node_.od().entry(kGuardTime, 0);
-  const auto* lf = node_.od().entry(kLifeTimeFactor, 0);
-  if (!gt || !lf) return 0;
-  return gt->as<std::uint32_t>() * lf->as<std::uint32_t>();
+  if (!guard_time_ || !life_time_factor_) return 0;
+  return guard_time_->as<std::uint32_t>() * life_time_factor_->as<std::uint32_t>();
 }
 
 void ErrorControl::reset_communication(sim::Time now) {

@@ -10,6 +10,7 @@
 namespace canopen {
 
 class Node;
+class OdEntry;
 
 class ErrorControl {
  public:
@@ -29,6 +30,10 @@ class ErrorControl {
   std::uint32_t life_time_ms() const;
 
   Node& node_;
+  // 0x1017, 0x100C, 0x100D (null when absent): read every tick, bound by bind_objects().
+  const OdEntry* heartbeat_time_ = nullptr;
+  const OdEntry* guard_time_ = nullptr;
+  const OdEntry* life_time_factor_ = nullptr;
   bool toggle_ = false;
   bool armed_ = false;
   bool in_error_ = false;

@@ -47,21 +47,24 @@ SdoAbort resolve_mapping(ObjectDictionary& od, std::uint16_t mapping_index, std:
 }
 
 void pack_pdo(const PdoMapping& m, std::span<std::uint8_t, 8> out) {
+  // Every TPDO on every SYNC: byte loops over at most 8 bytes, no library calls.
+  std::uint8_t* dst = out.data();
   std::size_t pos = 0;
   for (const auto& o : m.objects) {
+    std::size_t i = 0;
     if (o.entry) {
-      const auto& v = o.entry->value;
-      const std::size_t n = std::min<std::size_t>(o.bytes, v.size());
-      std::copy_n(v.begin(), n, out.begin() + static_cast<std::ptrdiff_t>(pos));
+      const std::uint8_t* v = o.entry->value.data();
+      const std::size_t n = std::min<std::size_t>(o.bytes, o.entry->value.size());
+      for (; i < n; ++i) dst[pos + i] = v[i];
       // Width conversion: a narrow object in a wide slot is sign- or zero-extended.
       const std::uint8_t fill = (n > 0 && is_signed_integer(o.entry->type) && (v[n - 1] & 0x80)) ? 0xFF : 0x00;
-      std::fill(out.begin() + static_cast<std::ptrdiff_t>(pos + n), out.begin() + static_cast<std::ptrdiff_t>(pos + o.bytes), fill);
+      for (; i < o.bytes; ++i) dst[pos + i] = fill;
     } else {
-      std::fill_n(out.begin() + static_cast<std::ptrdiff_t>(pos), o.bytes, 0);
+      for (; i < o.bytes; ++i) dst[pos + i] = 0;
     }
     pos += o.bytes;
   }
-  std::fill(out.begin() + static_cast<std::ptrdiff_t>(pos), out.end(), 0);
+  for (; pos < 8; ++pos) dst[pos] = 0;
 }
 
 }  // namespace canopen

@@ -34,6 +34,8 @@ void PdoService::bind_objects() {
       r.number = i + 1;
       r.comm_index = comm;
       r.map_index = map;
+      r.inhibit_time = od.entry(comm, 3);
+      r.event_timer = od.entry(comm, 5);
       rpdos_.push_back(r);
       install_checks(comm, map, PdoDirection::Receive);
     }
@@ -45,6 +47,8 @@ void PdoService::bind_objects() {
       t.number = i + 1;
       t.comm_index = comm;
       t.map_index = map;
+      t.inhibit_time = od.entry(comm, 3);
+      t.event_timer = od.entry(comm, 5);
       tpdos_.push_back(t);
       install_checks(comm, map, PdoDirection::Transmit);
     }
@@ -213,13 +217,11 @@ int PdoService::rpdo_length(int number) const {
 }
 
 std::uint16_t PdoService::event_timer_ms(const Pdo& p) const {
-  const auto* e = node_.od().entry(p.comm_index, 5);
-  return e ? e->as<std::uint16_t>() : 0;
+  return p.event_timer ? p.event_timer->as<std::uint16_t>() : 0;
 }
 
 std::uint16_t PdoService::inhibit_100us(const Pdo& p) const {
-  const auto* e = node_.od().entry(p.comm_index, 3);
-  return e ? e->as<std::uint16_t>() : 0;
+  return p.inhibit_time ? p.inhibit_time->as<std::uint16_t>() : 0;
 }
 
 // ---- receive ------------------------------------------------------------------------------------
@@ -473,8 +475,9 @@ void PdoService::on_enter_operational(sim::Time now) {
 void PdoService::process(sim::Time now) {
   if (!pdo_allowed(node_.nmt_state())) return;
   for (auto& r : rpdos_) {
+    if (!r.valid || !r.deadline_armed) continue;
     const auto et = event_timer_ms(r);
-    if (r.valid && r.deadline_armed && et != 0 && now - r.last_rx > sim::milliseconds(et)) {
+    if (et != 0 && now - r.last_rx > sim::milliseconds(et)) {
       r.deadline_armed = false;  // one EMCY per timeout; re-armed by the next reception
       node_.emergency().raise(kEmcyRpdoTimeout, node_.policy().error_control.communication_error_register);
     }

@@ -73,6 +73,9 @@ class PdoService {
     std::uint32_t cob_id = 0;
     std::uint8_t type = 255;
     PdoMapping mapping;
+    // Communication sub 3 (inhibit time) and 5 (event timer), read every tick; null when absent.
+    const OdEntry* inhibit_time = nullptr;
+    const OdEntry* event_timer = nullptr;
   };
   struct Rpdo : Pdo {
     bool latched = false;

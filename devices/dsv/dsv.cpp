@@ -63,7 +63,7 @@ Dsv::Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
   parameters_ = std::make_unique<DsvParameters>(n.od(), options_);
   input_ = std::make_unique<ActualValueInput>(*parameters_, options_);
   chain_ = std::make_unique<DsvSignalChain>(*parameters_, *input_, *control_, options_, n.od());
-  control_->set_status_flags([this] { return chain_->status_flags(); });
+  control_->set_status_flags([this] { return chain_->status_flags(); }, true);  // see status_flags()
   control_->dsm().set_fault_hold(options_.fault_hold);
   control_->dsm().set_strict_reset_sources(options_.strict_fault_reset);
   set_restore_keeps_address(options_.restore_keeps_address);

@@ -26,7 +26,13 @@ SdoAbort range(std::int64_t v, std::int64_t lo, std::int64_t hi) {
 }  // namespace
 
 DsvParameters::DsvParameters(canopen::ObjectDictionary& od, const DsvOptions& options)
-    : od_(od), o_(options), control_mode_(od.entry(0x6043, 0)), mode_of_operation_(od.entry(0x2042, 0)) {
+    : od_(od),
+      o_(options),
+      control_mode_(od, 0x6043, 0),
+      mode_of_operation_(od, 0x2042, 0),
+      characteristic_optimisation_(od.entry(0x2344, 1)),
+      displayed_unit_(od.entry(0x2202, 0)) {
+  for (const auto& spec : application_objects()) (void)value_entry(spec.index);
   install_rules();
   install_shared();
   install_characteristic_optimisation(0x2344);
@@ -38,19 +44,24 @@ OdEntry& DsvParameters::entry(std::uint16_t index) {
   return e ? *e : *od_.entry(index, 0);
 }
 
-std::int64_t DsvParameters::value(std::uint16_t index) const {
-  const OdEntry* e = od_.entry(index, 1);
+OdEntry* DsvParameters::value_entry(std::uint16_t index) const {
+  const std::uint32_t key = canopen::EntryCache::key(index, 0);
+  OdEntry* e = nullptr;
+  if (values_.find(key, e)) return e;
+  e = od_.entry(index, 1);
   if (!e) e = od_.entry(index, 0);
+  values_.insert(key, e);
+  return e;
+}
+
+std::int64_t DsvParameters::value(std::uint16_t index) const {
+  const OdEntry* e = value_entry(index);
   return e ? e->as<std::int64_t>() : 0;
 }
 
-std::int64_t DsvParameters::shared(Shared s) const {
-  const auto& list = shared_[static_cast<std::size_t>(s)];
-  return list.empty() ? 0 : list.front()->as<std::int64_t>();
-}
 
 std::int64_t DsvParameters::unit_max(std::int8_t m) const {
-  const auto unit = od_.get<std::int8_t>(0x2202);
+  const auto unit = displayed_unit_->as<std::int8_t>();
   // §5.4.1 ranges by control mode and 2202h value; 0 = "–" (no such unit in this mode).
   static constexpr std::int64_t kPressure[5] = {500000, 8000000, 1000000, 0, 50000};
   static constexpr std::int64_t kVelocity[5] = {500000, 2000000, 1000000, 100000, 360000};
@@ -156,6 +167,8 @@ void DsvParameters::install_shared() {
     if (spec.shared == Shared::None) continue;
     shared_[static_cast<std::size_t>(spec.shared)].push_back(od_.entry(spec.index, spec.shape == Shape::Record ? 1 : 0));
   }
+  for (std::size_t group = 0; group < shared_.size(); ++group)
+    shared_first_[group] = shared_[group].empty() ? nullptr : shared_[group].front();
   for (std::size_t group = 1; group < shared_.size(); ++group) {
     for (OdEntry* e : shared_[group]) {
       od_.add_observer(e->index, e->sub, [this, group](OdEntry& written, Origin) {
@@ -196,7 +209,7 @@ void DsvParameters::install_characteristic_optimisation(std::uint16_t index) {
   od_.after_write<std::uint16_t>(index, 5, [point](std::uint16_t v, Origin) { point().y = v / 1000.0; });
 }
 
-bool DsvParameters::characteristic_on() const { return od_.get<std::uint16_t>(0x2344, 1) == 1; }
+bool DsvParameters::characteristic_on() const { return characteristic_optimisation_->as<std::uint16_t>() == 1; }
 
 void DsvParameters::save_curves(canopen::ParameterStore& memory) const {
   for (std::size_t sol = 0; sol < 2; ++sol) {

@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "devices/canopen/bound_entry.h"
+#include "devices/canopen/entry_cache.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/canopen/parameter_store.h"
 #include "devices/dsv/dsv_objects.h"
@@ -22,12 +24,17 @@ class DsvParameters {
   DsvParameters(const DsvParameters&) = delete;
   DsvParameters& operator=(const DsvParameters&) = delete;
 
-  std::int8_t control_mode() const { return control_mode_->as<std::int8_t>(); }
-  std::int8_t mode_of_operation() const { return mode_of_operation_->as<std::int8_t>(); }
+  std::int8_t control_mode() const { return control_mode_.get(); }
+  std::int8_t mode_of_operation() const { return mode_of_operation_.get(); }
   /// Value of a shared parameter (all its indices hold the same value).
-  std::int64_t shared(Shared s) const;
+  std::int64_t shared(Shared s) const {
+    const canopen::OdEntry* e = shared_first_[static_cast<std::size_t>(s)];
+    return e ? e->as<std::int64_t>() : 0;
+  }
   /// Value (sub 1 of a record, sub 0 of a VAR) of an application object.
   std::int64_t value(std::uint16_t index) const;
+  /// The entry value() reads (null when there is none): for code that binds it once.
+  canopen::OdEntry* value_entry(std::uint16_t index) const;
   canopen::OdEntry& entry(std::uint16_t index);
 
   /// Maximum raw value of the unit selected by 2202h for closed-loop mode `m` (0 = "–").
@@ -57,9 +64,15 @@ class DsvParameters {
 
   canopen::ObjectDictionary& od_;
   const DsvOptions& o_;
-  canopen::OdEntry* control_mode_;
-  canopen::OdEntry* mode_of_operation_;
+  canopen::BoundEntry<std::int8_t> control_mode_;
+  canopen::BoundEntry<std::int8_t> mode_of_operation_;
+  canopen::OdEntry* characteristic_optimisation_;  // 0x2344:01
+  canopen::OdEntry* displayed_unit_;               // 0x2202
+  // index → the entry value() reads (sub 1 of a record, else sub 0): one probe per read, filled
+  // with every application object when built.
+  mutable canopen::EntryCache values_;
   std::array<std::vector<canopen::OdEntry*>, 17> shared_{};
+  std::array<const canopen::OdEntry*, 17> shared_first_{};  // the entry shared() reads
   std::array<dsp408::CharacteristicCurve, 2> curves_;
 };
 

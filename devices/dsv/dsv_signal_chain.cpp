@@ -22,6 +22,9 @@ DsvSignalChain::DsvSignalChain(DsvParameters& parameters, ActualValueInput& inpu
   loops_[0] = loop_objects(mode::kVprcClosed, od);
   loops_[1] = loop_objects(mode::kDsc, od);
   loops_[2] = loop_objects(mode::kDpc, od);
+  auto e = [this](std::uint16_t index) { return p_.value_entry(index); };
+  par_ = {e(0x6300), e(0x6B00), e(0x6380), e(0x6B80), e(0x6480), e(0x62F0), e(0x2043),
+          e(0x2044), e(0x2045), e(0x2046), e(0x2047), e(0x2048), e(0x22B2), e(0x22B3)};
   ramp_.set_full_scale(1.0);
   ramp_b_.set_full_scale(1.0);
 }
@@ -31,19 +34,28 @@ DsvSignalChain::LoopObjects DsvSignalChain::loop_objects(std::int8_t m, canopen:
     canopen::OdEntry* v = od.entry(index, 1);
     return v ? v : od.entry(index, 0);
   };
+  const auto ref = DsvParameters::scaling_objects(m);
+  LoopObjects l = loop_objects_of(m, e);
+  l.min_reference = p_.value_entry(ref.min_reference);
+  l.max_reference = p_.value_entry(ref.max_reference);
+  return l;
+}
+
+template <typename E>
+DsvSignalChain::LoopObjects DsvSignalChain::loop_objects_of(std::int8_t m, E e) {
   switch (m) {
     case mode::kVprcClosed:
       return {e(0x6380), e(0x6381), e(0x63D0), e(0x2303), e(0x2304), e(0x2305), e(0x2306), e(0x2307), e(0x2308),
               e(0x2309), e(0x230A), e(0x230B), e(0x230C), e(0x230D), e(0x230E), e(0x2301), e(0x2302), e(0x2300),
-              nullptr,   e(0x63F0), e(0x63F3), e(0x23F1), e(0x63D1), e(0x63D3), e(0x63D2), e(0x23F3), e(0x23F2)};
+              nullptr,   e(0x63F0), e(0x63F3), e(0x23F1), e(0x63D1), e(0x63D3), e(0x63D2), e(0x23F3), e(0x23F2), nullptr, nullptr};
     case mode::kDsc:
       return {e(0x6500), e(0x6501), e(0x6550), e(0x6503), e(0x2504), e(0x6509), e(0x2506), e(0x650A), e(0x2508),
               e(0x2509), e(0x250A), e(0x250B), e(0x250C), e(0x250D), e(0x250E), e(0x2501), e(0x2502), e(0x2500),
-              nullptr,   e(0x6570), e(0x6573), e(0x2571), e(0x6551), e(0x6553), e(0x6552), e(0x2573), e(0x2572)};
+              nullptr,   e(0x6570), e(0x6573), e(0x2571), e(0x6551), e(0x6553), e(0x6552), e(0x2573), e(0x2572), nullptr, nullptr};
     default:
       return {e(0x6600), e(0x6601), e(0x6650), e(0x6603), e(0x2604), e(0x6609), e(0x2606), e(0x660A), e(0x2608),
               e(0x2609), e(0x260A), e(0x260B), e(0x260C), e(0x260D), e(0x260E), e(0x2601), e(0x2602), e(0x2600),
-              e(0x6608), e(0x6670), e(0x6673), e(0x2671), e(0x6651), e(0x6653), e(0x6652), e(0x2673), e(0x2672)};
+              e(0x6608), e(0x6670), e(0x6673), e(0x2671), e(0x6651), e(0x6653), e(0x6652), e(0x2673), e(0x2672), nullptr, nullptr};
   }
 }
 
@@ -91,8 +103,8 @@ double DsvSignalChain::current(int solenoid, double demand, std::int8_t m, bool 
   c.i_min = to_amperes(p_.shared(a ? Shared::IminA : Shared::IminB));
   c.i_max = to_amperes(p_.shared(a ? Shared::ImaxA : Shared::ImaxB));
   if (closed) {
-    c.falling = p_.value(a ? 0x2045 : 0x2046) == 1;
-    c.imin_at_zero = p_.value(0x2047) == 0;  // "0 = Imin always active yes"
+    c.falling = value(a ? par_.falling_a : par_.falling_b) == 1;
+    c.imin_at_zero = value(par_.imin_always) == 0;  // "0 = Imin always active yes"
     return dsp408::solenoid_current(c, demand);
   }
   if (p_.shared(Shared::DeadbandType) == 1) {
@@ -110,9 +122,11 @@ void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::Comman
   const auto sec = [this](Shared s) { return static_cast<double>(p_.shared(s)) / 1000.0; };
   a.set_enabled(on);
   b.set_enabled(on);
-  a.set_times({sec(Shared::RampAUp), sec(Shared::RampADown), sec(Shared::RampBUp), sec(Shared::RampBDown)});
+  const double a_up = sec(Shared::RampAUp), a_down = sec(Shared::RampADown);
+  const double b_up = sec(Shared::RampBUp), b_down = sec(Shared::RampBDown);
+  a.set_times({a_up, a_down, b_up, b_down});
   // Set point B (op-mode 3) is ramped on its own magnitude with the B times.
-  b.set_times({sec(Shared::RampBUp), sec(Shared::RampBDown), sec(Shared::RampBUp), sec(Shared::RampBDown)});
+  b.set_times({b_up, b_down, b_up, b_down});
 }
 
 void DsvSignalChain::open_loop(std::int8_t m, bool active, double dt, double& a, double& b) {
@@ -120,18 +134,18 @@ void DsvSignalChain::open_loop(std::int8_t m, bool active, double dt, double& a,
   double w = 0, wb = 0;
   switch (m) {
     case mode::kVpoc:
-      w = static_cast<double>(p_.value(0x6300)) / 16384.0;
-      wb = static_cast<double>(p_.value(0x6B00)) / 16384.0;
+      w = static_cast<double>(value(par_.vpoc_a)) / 16384.0;
+      wb = static_cast<double>(value(par_.vpoc_b)) / 16384.0;
       break;
     case mode::kVprcOpen:
-      w = static_cast<double>(p_.value(0x6380)) / 16384.0;
-      wb = static_cast<double>(p_.value(0x6B80)) / 16384.0;
+      w = static_cast<double>(value(par_.vprc_a)) / 16384.0;
+      wb = static_cast<double>(value(par_.vprc_b)) / 16384.0;
       break;
-    case mode::kDcol: w = static_cast<double>(p_.value(0x6480)) / 100000.0; break;
+    case mode::kDcol: w = static_cast<double>(value(par_.dcol)) / 100000.0; break;
     default: break;
   }
   // Inversion mirrors the set point about the neutral point of the mode of operation.
-  if ((m == mode::kVpoc || m == mode::kVprcOpen) && p_.value(0x62F0) == -1) {
+  if ((m == mode::kVpoc || m == mode::kVprcOpen) && value(par_.inversion) == -1) {
     if (op == 2 || (op == 1 && o_.op_mode1_bipolar)) w = -w;
     if (op == 1 && !o_.op_mode1_bipolar) w = 1.0 - w;
   }
@@ -173,14 +187,13 @@ void DsvSignalChain::closed_loop(std::int8_t m, bool active, sim::Time now, doub
   const bool pressure = m == mode::kVprcClosed;
   // Thresholds, windows and speeds are in unit/1000; mode 4 works in counts.
   const double k = pressure ? input_.counts_per_unit() : 1.0;
-  const auto ref = DsvParameters::scaling_objects(m);
-  const double fs = pressure ? 16384.0 : std::max(1.0, static_cast<double>(p_.value(ref.max_reference) - p_.value(ref.min_reference)));
+  const double fs = pressure ? 16384.0 : std::max(1.0, static_cast<double>(value(l.max_reference) - value(l.min_reference)));
   const double w = l.setpoint->as<double>();
   const double x = input_.value(m);
-  limiter_.set_rates(static_cast<double>(p_.value(0x22B2)) * k, static_cast<double>(p_.value(0x22B3)) * k);
+  limiter_.set_rates(static_cast<double>(value(par_.speed_pos)) * k, static_cast<double>(value(par_.speed_neg)) * k);
   const double w_lim = active ? limiter_.step(w, dt) : hold_w_;
   double e = w_lim - x;
-  if (p_.value(0x2044) == 1) e = -e;  // system control inverted
+  if (value(par_.system_inverted) == 1) e = -e;  // system control inverted
   last_w_ = w;
   last_x_ = x;
   last_e_ = e;
@@ -223,7 +236,7 @@ void DsvSignalChain::closed_loop(std::int8_t m, bool active, sim::Time now, doub
   const bool in_off = mag <= par(l.off_threshold) * k;
   if (in_off && !in_off_window_) in_off_window_since_ = now;
   in_off_window_ = in_off;
-  off = p_.value(0x2048) == 0 && par(l.off_threshold) > 0 && in_off && ms_elapsed(in_off_window_since_, now, l.off_delay->as<std::int64_t>());
+  off = value(par_.solenoid_off_disabled) == 0 && par(l.off_threshold) > 0 && in_off && ms_elapsed(in_off_window_since_, now, l.off_delay->as<std::int64_t>());
 }
 
 void DsvSignalChain::publish_measurements() {
@@ -250,15 +263,15 @@ dsp408::StatusFlags DsvSignalChain::status_flags() const {
     configure_ramps(ra, rb);
     // The set point may have changed since the last cycle (an RPDO is answered at once).
     const std::int8_t op = p_.mode_of_operation();
-    double w = m == mode::kVpoc ? p_.value(0x6300) / 16384.0 : m == mode::kVprcOpen ? p_.value(0x6380) / 16384.0 : p_.value(0x6480) / 100000.0;
-    if ((m == mode::kVpoc || m == mode::kVprcOpen) && p_.value(0x62F0) == -1) {
+    double w = m == mode::kVpoc ? value(par_.vpoc_a) / 16384.0 : m == mode::kVprcOpen ? value(par_.vprc_a) / 16384.0 : value(par_.dcol) / 100000.0;
+    if ((m == mode::kVpoc || m == mode::kVprcOpen) && value(par_.inversion) == -1) {
       if (op == 2 || (op == 1 && o_.op_mode1_bipolar)) w = -w;
       if (op == 1 && !o_.op_mode1_bipolar) w = 1.0 - w;
     }
     if (op == 3) w = std::clamp(w, 0.0, 1.0);
     f.ramp_running = ra.running(w);
     if (op == 3) {
-      const double wb = std::clamp((m == mode::kVpoc ? p_.value(0x6B00) : p_.value(0x6B80)) / 16384.0, 0.0, 1.0);
+      const double wb = std::clamp((m == mode::kVpoc ? value(par_.vpoc_b) : value(par_.vprc_b)) / 16384.0, 0.0, 1.0);
       f.ramp_running = f.ramp_running || rb.running(wb);
     }
   }
@@ -283,7 +296,7 @@ void DsvSignalChain::process(sim::Time now, double dt) {
   bool dither_on = true;
   if (s == DeviceState::Fault || s == DeviceState::FaultReaction) {
     // Error handling 2043h: the solenoids the reaction switches on carry Imax, without dither.
-    const auto reaction = p_.value(0x2043);
+    const auto reaction = value(par_.error_handling);
     if (reaction == 1 || reaction == 3) ia = to_amperes(p_.shared(Shared::ImaxA));
     if ((reaction == 2 || reaction == 3) && o_.solenoids == 2) ib = to_amperes(p_.shared(Shared::ImaxB));
     dither_on = false;

@@ -31,7 +31,7 @@ class DsvSignalChain {
   void process(sim::Time now, double dt);
   /// Entering HOLD: from ACTIVE the present (ramped / limited) set point is held, otherwise 0.
   void on_state_change(dsp408::DeviceState from, dsp408::DeviceState to);
-  dsp408::StatusFlags status_flags() const;
+  dsp408::StatusFlags status_flags() const;  ///< all clear outside ACTIVE and HOLD
   /// Actual value and deviation objects of the active closed-loop mode (read hooks call this).
   void publish_measurements();
 
@@ -49,9 +49,17 @@ class DsvSignalChain {
     canopen::OdEntry *setpoint, *actual, *deviation, *kp_pos, *kp_neg, *ti_pos, *ti_neg, *iwo_pos, *iwo_neg, *td_pos,
         *td_neg, *kd_pos, *kd_neg, *iwi_pos, *iwi_neg, *preset_offering, *speed_offering, *i_part_kept,
         *integrator_type, *target_type, *target_threshold, *target_delay, *trailing_type, *trailing_threshold,
-        *trailing_delay, *off_threshold, *off_delay;
+        *trailing_delay, *off_threshold, *off_delay, *min_reference, *max_reference;
   };
+  /// Parameters read every cycle (DsvParameters::value_entry, bound once; null when absent).
+  struct Parameters {
+    const canopen::OdEntry *vpoc_a, *vpoc_b, *vprc_a, *vprc_b, *dcol, *inversion, *error_handling, *system_inverted,
+        *falling_a, *falling_b, *imin_always, *solenoid_off_disabled, *speed_pos, *speed_neg;
+  };
+  static std::int64_t value(const canopen::OdEntry* e) { return e ? e->as<std::int64_t>() : 0; }
   LoopObjects loop_objects(std::int8_t m, canopen::ObjectDictionary& od);
+  template <typename E>
+  static LoopObjects loop_objects_of(std::int8_t m, E e);
   const LoopObjects* loop(std::int8_t m) const;
 
   void configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const;
@@ -65,6 +73,7 @@ class DsvSignalChain {
   dsp408::ChannelControl& control_;
   const DsvOptions& o_;
   LoopObjects loops_[3];  // modes 4, 7, 9
+  Parameters par_;
 
   dsp408::CommandValueRamp ramp_, ramp_b_;  // ramp_b_: set point B in mode of operation 3
   dsp408::RateLimiter limiter_;

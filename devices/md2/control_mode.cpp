@@ -19,17 +19,6 @@ bool mode_supported(Variant v, std::int8_t m) {
   }
 }
 
-bool is_closed_loop(std::int8_t m) {
-  return m == mode::kVprcClosed || m == mode::kDsc || m == mode::kDpc || m == mode::kVprcClosed2 || is_n_point(m);
-}
-
-bool is_n_point(std::int8_t m) { return m == mode::kTwoPoint1 || m == mode::kTwoPoint2 || m == mode::kThreePoint; }
-
-bool is_16_bit(std::int8_t m) {
-  return m == mode::kNone || m == mode::kVpoc || m == mode::kVprcOpen || m == mode::kVprcClosed ||
-         m == mode::kVprcClosed2;
-}
-
 std::uint32_t default_capability(Variant v) {
   // Amplifier: proportional valve, spool open loop, pressure open loop (bits 24, 25, 27).
   // Controller: n-point (14), drive (16), open-loop movement (17), velocity (18), position (20),

@@ -23,10 +23,17 @@ constexpr std::int8_t kThreePoint = -8;  ///< 3-point controller, 2 solenoids
 }  // namespace mode
 
 bool mode_supported(Variant v, std::int8_t m);
-bool is_closed_loop(std::int8_t m);
-bool is_n_point(std::int8_t m);
+constexpr bool is_n_point(std::int8_t m) {
+  return m == mode::kTwoPoint1 || m == mode::kTwoPoint2 || m == mode::kThreePoint;
+}
+constexpr bool is_closed_loop(std::int8_t m) {
+  return m == mode::kVprcClosed || m == mode::kDsc || m == mode::kDpc || m == mode::kVprcClosed2 || is_n_point(m);
+}
 /// 16-bit set point in bus resolution (modes 0, 1, 3, 4, −5) vs 32-bit scaled value.
-bool is_16_bit(std::int8_t m);
+constexpr bool is_16_bit(std::int8_t m) {
+  return m == mode::kNone || m == mode::kVpoc || m == mode::kVprcOpen || m == mode::kVprcClosed ||
+         m == mode::kVprcClosed2;
+}
 std::uint32_t default_capability(Variant v);
 
 /// Object indices of channel c (1-based). Manufacturer objects exist for channels 1..4 only.

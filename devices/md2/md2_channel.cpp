@@ -33,9 +33,9 @@ Md2Channel::Md2Channel(canopen::ObjectDictionary& od, const Md2Options& options,
 }
 
 void Md2Channel::install(canopen::ObjectDictionary& od) {
-  device_mode_ = od.entry(ix_.device_mode(), 0);
-  control_mode_ = od.entry(ix_.control_mode(), 0);
-  actual_mode_ = od.entry(ix_.actual_value_mode(), 0);
+  device_mode_ = canopen::BoundEntry<std::int8_t>(od, ix_.device_mode(), 0);
+  control_mode_ = canopen::BoundEntry<std::int8_t>(od, ix_.control_mode(), 0);
+  actual_mode_ = canopen::BoundEntry<std::int8_t>::optional(od, ix_.actual_value_mode(), 0);
   actual_in_16_ = od.entry(ix_.actual_input_16(), 0);
   actual_in_32_ = od.entry(ix_.actual_input_32(), 0);
   speed_pos_ = od.entry(ix_.speed_positive(), 0);
@@ -57,7 +57,7 @@ void Md2Channel::install(canopen::ObjectDictionary& od) {
     od.add_check(
         e->index, e->sub,
         [this](const OdEntry&, std::span<std::uint8_t>, Origin origin) {
-          if (from_bus(origin) && device_mode_->as<std::int8_t>() == 2) return SdoAbort::DataLocalControl;
+          if (from_bus(origin) && device_mode_.get() == 2) return SdoAbort::DataLocalControl;
           return SdoAbort::None;
         },
         CheckStage::State);
@@ -78,7 +78,7 @@ void Md2Channel::install(canopen::ObjectDictionary& od) {
     od.add_read_hook(actuals_[i]->index, 1, refresh);
     od.add_read_hook(deviations_[i]->index, 1, refresh);
   }
-  control_.set_status_flags([this] { return status_flags(); });
+  control_.set_status_flags([this] { return status_flags(); }, true);  // see status_flags()
   control_.dsm().set_listener([this](DeviceState from, DeviceState to) { on_state_change(from, to); });
 }
 
@@ -101,8 +101,8 @@ void Md2Channel::on_state_change(DeviceState from, DeviceState to) {
 }
 
 bool Md2Channel::uses_analog_input() const {
-  if (device_mode_->as<std::int8_t>() == 2) return true;
-  return actual_mode_ && actual_mode_->as<std::int8_t>() == 2 && is_closed_loop(control_mode());
+  if (device_mode_.get() == 2) return true;
+  return actual_mode_ && actual_mode_.get() == 2 && is_closed_loop(control_mode());
 }
 
 double Md2Channel::span(std::int8_t m) const {
@@ -111,7 +111,7 @@ double Md2Channel::span(std::int8_t m) const {
 
 double Md2Channel::setpoint_raw() const {
   const std::int8_t m = control_mode();
-  if (device_mode_->as<std::int8_t>() == 2) {
+  if (device_mode_.get() == 2) {
     const double full = is_16_bit(m) ? o_.bus_full_scale : o_.setpoint_max;
     return std::clamp(local_command, -1.0, 1.0) * full;
   }
@@ -133,7 +133,7 @@ double Md2Channel::setpoint_raw() const {
 double Md2Channel::actual_raw() const {
   const std::int8_t m = control_mode();
   if (!is_closed_loop(m) || !actual_mode_) return 0;
-  if (actual_mode_->as<std::int8_t>() == 1) {  // actual value via CAN
+  if (actual_mode_.get() == 1) {  // actual value via CAN
     return is_16_bit(m) ? actual_in_16_->as<double>() : actual_in_32_->as<double>();
   }
   if (is_16_bit(m)) return o_.bus_full_scale * actual_value / o_.p_range;  // pressure sensor
@@ -175,7 +175,6 @@ void Md2Channel::process(sim::Time now, double dt) {
   const std::int8_t m = control_mode();
   const DeviceState s = control_.state();
   const double n = o_.bus_full_scale;
-  const double w = setpoint_raw();
   last_actual_ = actual_raw();
 
   const bool active = s == DeviceState::Active;
@@ -193,6 +192,7 @@ void Md2Channel::process(sim::Time now, double dt) {
     return;
   }
   if (active) {
+    const double w = setpoint_raw();  // pure: read only where a live state uses it
     if (ramp_mode(m)) {
       effective_ = ramp_.step(std::clamp(w, -n, n), dt);
     } else if (speed_mode(m) && speed_pos_) {

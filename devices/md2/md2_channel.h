@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include "devices/canopen/bound_entry.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/md2/control_mode.h"
 #include "devices/md2/md2_options.h"
@@ -29,7 +30,7 @@ class Md2Channel {
 
   dsp408::ChannelControl& control() { return control_; }
   int number() const { return ix_.channel; }
-  std::int8_t control_mode() const { return control_mode_->as<std::int8_t>(); }
+  std::int8_t control_mode() const { return control_mode_.get(); }
 
   /// Application reset: ramps, controllers and outputs back to rest.
   void reset_model();
@@ -57,7 +58,7 @@ class Md2Channel {
   double actual_raw() const;       ///< feedback in the mode's bus unit
   double span(std::int8_t m) const;
   void publish_measurements();
-  dsp408::StatusFlags status_flags() const;
+  dsp408::StatusFlags status_flags() const;  ///< all clear outside ACTIVE and HOLD
   bool ramp_mode(std::int8_t m) const { return m == mode::kVpoc || m == mode::kVprcOpen; }
   bool speed_mode(std::int8_t m) const { return o_.is_speed_mode(m); }
 
@@ -72,9 +73,9 @@ class Md2Channel {
   dsp408::SolenoidCurve curve_a_, curve_b_;
 
   // Entries read every cycle (stable addresses in the node's dictionary).
-  canopen::OdEntry* device_mode_ = nullptr;
-  canopen::OdEntry* control_mode_ = nullptr;
-  canopen::OdEntry* actual_mode_ = nullptr;
+  canopen::BoundEntry<std::int8_t> device_mode_;
+  canopen::BoundEntry<std::int8_t> control_mode_;
+  canopen::BoundEntry<std::int8_t> actual_mode_;  // unbound on channels without feedback
   canopen::OdEntry* actual_in_16_ = nullptr;
   canopen::OdEntry* actual_in_32_ = nullptr;
   canopen::OdEntry* speed_pos_ = nullptr;

@@ -25,7 +25,7 @@ ChannelObjects ChannelObjects::for_channel(int c, bool with_device_mode) {
 }
 
 ChannelControl::ChannelControl(canopen::ObjectDictionary& od, const ChannelObjects& objects)
-    : od_(od), objects_(objects) {
+    : od_(od), objects_(objects), status_entry_(od.entry(objects.status_word, 0)) {
   install();
 }
 
@@ -96,13 +96,18 @@ void ChannelControl::set_paso_control(bool on) {
 }
 
 std::uint16_t ChannelControl::status_word() const {
-  StatusFlags f = flags_ ? flags_() : StatusFlags{};
+  const DeviceState s = dsm_.state();
+  const bool ask = flags_ && (!flags_live_only_ || s == DeviceState::Active || s == DeviceState::Hold);
+  StatusFlags f = ask ? flags_() : StatusFlags{};
   f.local = source_ != ControlSource::Bus;
-  return dsp408::status_word(dsm_.state(), f);
+  return dsp408::status_word(s, f);
 }
 
 void ChannelControl::publish_status() {
-  if (auto* e = od_.entry(objects_.status_word, 0)) put(*e, status_word());
+  if (!status_entry_) return;
+  const std::uint16_t w = status_word();
+  if (status_entry_->value.size() == 2 && canopen::decode_unsigned(status_entry_->value) == w) return;
+  put(*status_entry_, w);
 }
 
 devices::ProfileStatus ChannelControl::profile_status() const {

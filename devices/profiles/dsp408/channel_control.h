@@ -52,9 +52,14 @@ class ChannelControl {
   const ChannelObjects& objects() const { return objects_; }
 
   /// The product's flags for bits 5, 9, 12, 13, 14 (bit 4 comes from the control source).
-  void set_status_flags(std::function<StatusFlags()> f) { flags_ = std::move(f); }
+  /// `live_states_only`: the product sets flags only in ACTIVE and HOLD, so the status word of
+  /// any other state is built without asking it (most channels of a multi-channel product idle).
+  void set_status_flags(std::function<StatusFlags()> f, bool live_states_only = false) {
+    flags_ = std::move(f);
+    flags_live_only_ = live_states_only;
+  }
   std::uint16_t status_word() const;
-  /// Refreshes 0x6041 in the dictionary (for change-driven TPDOs).
+  /// Refreshes 0x6041 in the dictionary (for change-driven TPDOs); stores only a changed word.
   void publish_status();
 
   /// Re-reads 0x604F (after the dictionary was reloaded).
@@ -76,10 +81,12 @@ class ChannelControl {
 
   canopen::ObjectDictionary& od_;
   ChannelObjects objects_;
+  canopen::OdEntry* status_entry_ = nullptr;  // 0x6041 of the channel, published every cycle
   DeviceStateMachine dsm_;
   ControlSource source_ = ControlSource::Bus;
   bool paso_ = false;
   std::function<StatusFlags()> flags_;
+  bool flags_live_only_ = false;
 };
 
 }  // namespace dsp408

@@ -14,7 +14,7 @@ inline void put(canopen::OdEntry& e, std::int64_t v) { canopen::encode_unsigned(
 /// Rounds to the nearest integer, limited to [lo, hi], and writes it.
 inline void put_rounded(canopen::OdEntry& e, double v, double lo, double hi) {
   const double c = v < lo ? lo : (v > hi ? hi : v);
-  put(e, static_cast<std::int64_t>(std::llround(c)));
+  put(e, c == 0.0 ? 0 : static_cast<std::int64_t>(std::llround(c)));  // idle outputs publish 0 every cycle
 }
 
 }  // namespace dsp408

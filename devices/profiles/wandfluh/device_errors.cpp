@@ -5,10 +5,15 @@
 namespace wandfluh {
 
 DeviceErrors::Entry* DeviceErrors::find(std::uint16_t code, std::uint8_t bits) {
-  for (std::size_t i = 0; i < count_; ++i)
-    if (entries_[i].code == code) return &entries_[i];
+  for (std::size_t i = 0; i < count_; ++i) {
+    if (entries_[i].code == code) {
+      next_ = i + 1;
+      return &entries_[i];
+    }
+  }
   if (count_ == entries_.size()) return nullptr;  // more distinct codes than any manual lists
   entries_[count_] = Entry{code, bits, false, false};
+  next_ = count_ + 1;
   return &entries_[count_++];
 }
 
@@ -22,14 +27,6 @@ void DeviceErrors::raise(Entry& e, bool notify) {
   e.latched = true;
   node_.emergency().raise(e.code, e.bits);
   if (notify && on_error_) on_error_(e.code);
-}
-
-void DeviceErrors::set_condition(std::uint16_t code, std::uint8_t register_bits, bool present) {
-  Entry* e = find(code, register_bits);
-  if (!e) return;
-  const bool rising = present && !e->present;
-  e->present = present;
-  if (rising && !e->latched) raise(*e, true);
 }
 
 void DeviceErrors::latch(std::uint16_t code, std::uint8_t register_bits, bool notify) {

@@ -20,7 +20,14 @@ class DeviceErrors {
   void set_on_error(std::function<void(std::uint16_t code)> f) { on_error_ = std::move(f); }
 
   /// A lasting condition (fault injection, a port below its threshold): the rising edge latches.
-  void set_condition(std::uint16_t code, std::uint8_t register_bits, bool present);
+  void set_condition(std::uint16_t code, std::uint8_t register_bits, bool present) {
+    // Inline: every condition every tick, nearly always unchanged and in the order of last time.
+    Entry* e = next_ < count_ && entries_[next_].code == code ? &entries_[next_++] : find(code, register_bits);
+    if (!e) return;
+    const bool rising = present && !e->present;
+    e->present = present;
+    if (rising && !e->latched) raise(*e, true);
+  }
   /// An event without a lasting condition (communication fault 0x8100): latches at once.
   /// `notify` false: the caller has already applied the reaction (forced by NMT).
   void latch(std::uint16_t code, std::uint8_t register_bits, bool notify = true);
@@ -50,6 +57,7 @@ class DeviceErrors {
   canopen::Node& node_;
   std::array<Entry, 16> entries_{};
   std::size_t count_ = 0;
+  std::size_t next_ = 0;  // where the next lookup starts: products check their conditions in a fixed order
   std::function<void(std::uint16_t)> on_error_;
 };
 

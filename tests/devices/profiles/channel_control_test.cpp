@@ -83,3 +83,29 @@ TEST_F(ChannelControlTest, PasoControlAcceptsLocalButRefusesBusOperation) {
   channel->set_paso_control(false);  // PASO gives control back: local (0x604F = 1) now applies
   EXPECT_EQ(channel->source(), dsp408::ControlSource::Local);
 }
+
+TEST_F(ChannelControlTest, LiveOnlyFlagsAreAskedInActiveAndHoldOnly) {
+  int asked = 0;
+  channel->set_status_flags(
+      [&] {
+        ++asked;
+        return dsp408::StatusFlags{.ramp_running = true};
+      },
+      true);
+  EXPECT_EQ(channel->status_word() & dsp408::status::kRampRunning, 0);
+  EXPECT_EQ(asked, 0);
+  h.write(0x6040, 0, 0x0007, 2);  // ACTIVE
+  EXPECT_EQ(channel->state(), dsp408::DeviceState::Active);
+  EXPECT_NE(channel->status_word() & dsp408::status::kRampRunning, 0);
+  EXPECT_EQ(asked, 1);
+  h.write(0x6040, 0, 0x0003, 2);  // HOLD
+  EXPECT_EQ(channel->state(), dsp408::DeviceState::Hold);
+  EXPECT_NE(channel->status_word() & dsp408::status::kRampRunning, 0);
+  EXPECT_EQ(asked, 2);
+  h.write(0x6040, 0, 0x0001, 2);  // DISABLED
+  EXPECT_EQ(channel->status_word() & dsp408::status::kRampRunning, 0);
+  EXPECT_EQ(asked, 2);
+  channel->publish_status();  // the stored word follows the state, the flags not asked
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6041), channel->status_word());
+  EXPECT_EQ(asked, 2);
+}
