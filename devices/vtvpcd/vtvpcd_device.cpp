@@ -344,12 +344,12 @@ void VtvpcdDevice::OutputSlot::bind(canopen::OdEntry* e) {
   hi = is_signed ? (std::int64_t{1} << (bits - 1)) - 1 : (std::int64_t{1} << bits) - 1;
 }
 
-void VtvpcdDevice::put(std::size_t slot, std::int64_t raw) {
+inline void VtvpcdDevice::put(std::size_t slot, std::int64_t raw) {
   const OutputSlot& o = out_[slot];
   o.entry.store(std::clamp(raw, o.lo, o.hi));
 }
 
-void VtvpcdDevice::put_eu(std::size_t slot, double eu, Scale scale) {
+inline void VtvpcdDevice::put_eu(std::size_t slot, double eu, Scale scale) {
   // Each slot is always published with the same scale: an unchanged EU value has the raw value
   // converted last time (NaN never compares equal, so it is converted anew). The bytes are
   // written every cycle all the same: a reset may have put the default there meanwhile.
