@@ -63,7 +63,8 @@ class BoundEntry {
   explicit BoundEntry(canopen::OdEntry* e)
       : e_(e),
         signed_(e && canopen::is_signed_integer(e->type)),
-        real_(e && canopen::is_real(e->type)) {}
+        real_(e && canopen::is_real(e->type)),
+        word_(e && !real_ && canopen::type_size(e->type) == 4) {}
 
   canopen::OdEntry* entry() const { return e_; }
   explicit operator bool() const { return e_ != nullptr; }
@@ -72,25 +73,50 @@ class BoundEntry {
   template <typename T>
   T as() const {
     static_assert(std::is_integral_v<T>);
-    if (real_) return e_->as<T>();
-    const std::uint64_t u = entry_bits(*e_);
-    if (!signed_) return static_cast<T>(u);
-    const std::size_t n = e_->value.size();
-    if (n == 0) return 0;
-    if (n < 8 && (e_->value[n - 1] & 0x80)) return static_cast<T>(static_cast<std::int64_t>(u | ~std::uint64_t{0} << (8 * n)));
-    return static_cast<T>(static_cast<std::int64_t>(u));
+    const canopen::Bytes& v = e_->value;
+    if (word_ && v.size() == 4) [[likely]] {  // the common 32-bit value: one straight decode, inline
+      const std::uint8_t* p = v.data();
+      const std::uint32_t u = static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+                              static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24;
+      return signed_ ? static_cast<T>(static_cast<std::int64_t>(static_cast<std::int32_t>(u))) : static_cast<T>(u);
+    }
+    return as_other<T>();
   }
   /// Publishes an integer as encode_unsigned(v, value) does (two's complement, truncated).
   template <typename T>
   void store(T v) const {
     static_assert(std::is_integral_v<T>);
+    canopen::Bytes& bytes = e_->value;
+    if (word_ && bytes.size() == 4) [[likely]] {
+      const auto u = static_cast<std::uint64_t>(v);
+      std::uint8_t* p = bytes.data();
+      p[0] = static_cast<std::uint8_t>(u);
+      p[1] = static_cast<std::uint8_t>(u >> 8);
+      p[2] = static_cast<std::uint8_t>(u >> 16);
+      p[3] = static_cast<std::uint8_t>(u >> 24);
+      return;
+    }
     store_entry_bits(*e_, static_cast<std::uint64_t>(v));
   }
 
  private:
+  /// Any other width or type; kept out of line so the 32-bit path stays small where it is inlined.
+  template <typename T>
+  [[gnu::noinline]] T as_other() const {
+    if (real_) return e_->as<T>();
+    const canopen::Bytes& v = e_->value;
+    const std::uint64_t u = entry_bits(*e_);
+    if (!signed_) return static_cast<T>(u);
+    const std::size_t n = v.size();
+    if (n == 0) return 0;
+    if (n < 8 && (v[n - 1] & 0x80)) return static_cast<T>(static_cast<std::int64_t>(u | ~std::uint64_t{0} << (8 * n)));
+    return static_cast<T>(static_cast<std::int64_t>(u));
+  }
+
   canopen::OdEntry* e_ = nullptr;
   bool signed_ = false;
   bool real_ = false;
+  bool word_ = false;  ///< a 4-byte integer type
 };
 
 }  // namespace devices

@@ -48,6 +48,14 @@ constexpr std::array<std::uint16_t, kSlotCount> kSlotIndex{
     idx::kDiscreteOutputs, idx::kPowerCmd,        idx::kPowerCmdF8F10,  idx::kPowerCmdBinary,   idx::kPressCmd,
     idx::kPressCmdB18B20,  idx::kPressCmdBinary,  idx::kPressureStroke, idx::kResAngleCmd,      idx::kValveCmd};
 
+/// The printed scale each EU readout is converted with (kScaleOne: a raw readout, put() only).
+/// Press CMD's depends on a setting (see scale_of).
+constexpr std::array<Scale, kSlotCount> kSlotScale{
+    kScalePercent, kScalePercent, kScalePercent, kScaleTable,   kScalePercent,  // act. angle .. Angle CMD
+    kScalePercent, kScalePercent, kScaleOne,     kScaleOne,     kScaleOne,      // b14/b16, b2/b4, binary, bus status, DI
+    kScaleOne,     kScalePercent, kScalePercent, kScaleOne,     kScalePercent,  // DO, Power CMD, f8/f10, binary, Press CMD
+    kScalePercent, kScaleOne,     kScaleTable,   kScaleTable,   kScaleTable};   // b18/b20, binary, stroke, res. angle, valve
+
 bool high(double v) { return v >= 0.5; }
 }  // namespace
 
@@ -101,7 +109,10 @@ VtvpcdDevice::VtvpcdDevice(Settings settings) : settings_(std::move(settings)), 
   params_ = std::make_unique<OdParameters>(node_->od());
   faults_ = std::make_unique<FaultMonitor>(node_->emergency(), settings_);
   out_.resize(kSlotCount);
-  for (std::size_t s = 0; s < kSlotCount; ++s) out_[s].bind(node_->od().entry(kSlotIndex[s], 0));
+  for (std::size_t s = 0; s < kSlotCount; ++s) {
+    const Scale scale = s == kPressCmd && settings_.press_cmd_scale_printed ? kScalePressCmdPrinted : kSlotScale[s];
+    out_[s].bind(node_->od().entry(kSlotIndex[s], 0), scale);
+  }
   if (settings_.builtin_plant) {
     builtin_.emplace(settings_.plant, settings_.pump_type);
     apply_plant_to_inputs();
@@ -336,27 +347,28 @@ void VtvpcdDevice::control_cycle(double dt_s) {
   }
 }
 
-void VtvpcdDevice::OutputSlot::bind(canopen::OdEntry* e) {
+void VtvpcdDevice::OutputSlot::bind(canopen::OdEntry* e, Scale eu_scale) {
   entry = devices::BoundEntry(e);
+  scale = eu_scale;
   const bool is_signed = canopen::is_signed_integer(e->type);
   const int bits = static_cast<int>(e->value.size() * 8);
   lo = is_signed ? -(std::int64_t{1} << (bits - 1)) : 0;
   hi = is_signed ? (std::int64_t{1} << (bits - 1)) - 1 : (std::int64_t{1} << bits) - 1;
 }
 
-void VtvpcdDevice::put(std::size_t slot, std::int64_t raw) {
+inline void VtvpcdDevice::put(std::size_t slot, std::int64_t raw) {
   const OutputSlot& o = out_[slot];
   o.entry.store(std::clamp(raw, o.lo, o.hi));
 }
 
-void VtvpcdDevice::put_eu(std::size_t slot, double eu, Scale scale) {
-  // Each slot is always published with the same scale: an unchanged EU value has the raw value
-  // converted last time (NaN never compares equal, so it is converted anew). The bytes are
-  // written every cycle all the same: a reset may have put the default there meanwhile.
+inline void VtvpcdDevice::put_eu(std::size_t slot, double eu) {
+  // An unchanged EU value has the raw value converted last time, with the slot's one scale (NaN
+  // never compares equal, so it is converted anew). The bytes are written every cycle all the
+  // same: a reset may have put the default there meanwhile.
   OutputSlot& o = out_[slot];
   if (!(eu == o.last_eu)) {
     o.last_eu = eu;
-    o.last_raw = to_raw(eu, scale);
+    o.last_raw = to_raw(eu, o.scale);
   }
   put(slot, o.last_raw);
 }
@@ -364,24 +376,24 @@ void VtvpcdDevice::put_eu(std::size_t slot, double eu, Scale scale) {
 void VtvpcdDevice::publish(const SetSelection& sel, double alpha_meas, double p_a, double p_b, std::uint16_t di_word) {
   const ControlOutputs& c = controller_.outputs();
   const auto& p = *params_;
-  put_eu(kActAngle, alpha_meas, kScalePercent);
-  put_eu(kActPressureA, p_a, kScalePercent);
-  put_eu(kActPressureB, p_b, kScalePercent);
-  put_eu(kActValve, pilot_spool_position_ * 100.0, kScaleTable);
-  put_eu(kAngleCmd, c.alpha_r, kScalePercent);
-  put_eu(kAngleB14B16, analog_angle_b14_b16_ * 100.0, kScalePercent);
-  put_eu(kAngleB2B4, analog_angle_b2_b4_ * 100.0, kScalePercent);
-  put_eu(kPressB18B20, analog_pressure_b18_b20_ / kPaPerBar, kScalePercent);
-  put_eu(kPowerF8F10, analog_power_f8_f10_ * 100.0, kScalePercent);
+  put_eu(kActAngle, alpha_meas);
+  put_eu(kActPressureA, p_a);
+  put_eu(kActPressureB, p_b);
+  put_eu(kActValve, pilot_spool_position_ * 100.0);
+  put_eu(kAngleCmd, c.alpha_r);
+  put_eu(kAngleB14B16, analog_angle_b14_b16_ * 100.0);
+  put_eu(kAngleB2B4, analog_angle_b2_b4_ * 100.0);
+  put_eu(kPressB18B20, analog_pressure_b18_b20_ / kPaPerBar);
+  put_eu(kPowerF8F10, analog_power_f8_f10_ * 100.0);
   // The "binary" readouts carry the raw table entry of set k unchanged (A33, A40).
   put(kAngleBinary, p.raw(static_cast<std::uint16_t>(idx::kAngleCmdBinary0 + sel.set)));
   put(kPressBinary, p.raw(static_cast<std::uint16_t>(idx::kPressCmdBinary0 + sel.set)));
   put(kPowerBinary, p.raw(static_cast<std::uint16_t>(idx::kPowerCmdBinary0 + sel.set)));
-  put_eu(kPowerCmd, c.power_r, kScalePercent);
-  put_eu(kPressCmd, c.p_r, settings_.press_cmd_scale_printed ? kScalePressCmdPrinted : kScalePercent);
-  put_eu(kPressureStroke, c.alpha_p, kScaleTable);
-  put_eu(kResAngleCmd, c.alpha_res, kScaleTable);
-  put_eu(kValveCmd, c.valve_cmd, kScaleTable);
+  put_eu(kPowerCmd, c.power_r);
+  put_eu(kPressCmd, c.p_r);
+  put_eu(kPressureStroke, c.alpha_p);
+  put_eu(kResAngleCmd, c.alpha_res);
+  put_eu(kValveCmd, c.valve_cmd);
   put(kDiscreteInputs, di_word);
   put(kBusStatus, faults_->bus_status());
   OutputState os;

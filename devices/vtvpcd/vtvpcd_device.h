@@ -68,7 +68,8 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   void control_cycle(double dt_s);
   void publish(const SetSelection& sel, double alpha_meas, double p_a, double p_b, std::uint16_t di_word);
   void put(std::size_t slot, std::int64_t raw);
-  void put_eu(std::size_t slot, double eu, Scale scale);
+  /// Converts `eu` with the slot's scale and publishes it.
+  void put_eu(std::size_t slot, double eu);
   void apply_plant_to_inputs();
 
   Settings settings_;
@@ -93,14 +94,16 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   double analog_power_f8_f10_ = 0;    ///< in: 0..1
 
   // Run state.
-  /// A read-only object the cycle publishes: its entry, the range of its type, and the EU value
-  /// it was last converted from (the conversion is skipped while that does not change).
+  /// A read-only object the cycle publishes: its entry, the range of its type, the scale of its
+  /// EU value, and the EU value it was last converted from (the conversion is skipped while that
+  /// does not change).
   struct OutputSlot {
     devices::BoundEntry entry;
     std::int64_t lo = 0, hi = 0;
+    Scale scale;
     double last_eu = std::numeric_limits<double>::quiet_NaN();
     std::int64_t last_raw = 0;
-    void bind(canopen::OdEntry* e);
+    void bind(canopen::OdEntry* e, Scale eu_scale);
   };
   std::vector<OutputSlot> out_;  ///< by slot
   sim::Duration cycle_debt_{0};

@@ -81,7 +81,7 @@ std::uint8_t CamUnit::update(std::int64_t x) {
     Cam& c = cams_[k];
     c.low = low_[k].as<std::int32_t>();
     c.high = high_[k].as<std::int32_t>();
-    c.hysteresis = hysteresis_[k].as<std::uint32_t>();
+    if (c.inside) c.hysteresis = hysteresis_[k].as<std::uint32_t>();  // only a cam inside uses it
     const bool inside = c.update(x);
     const auto bit = static_cast<std::uint8_t>(1u << k);
     if ((enabled & bit) && (inside != ((inverted & bit) != 0))) state |= bit;

@@ -68,4 +68,14 @@ TEST(VtvpcdReadouts, NotANumberReadsZeroEveryTime) {
   EXPECT_EQ(n.raw(0x2F03), 16384);
 }
 
+TEST(VtvpcdReadouts, PressCmdUsesTheConfiguredScale) {
+  for (const bool printed : {false, true}) {
+    vtest::Vtvpcd n({{"builtin_plant", "false"}, {"cmd_source", "analog"}, {"scale_0x2F0E", printed ? "324.7" : "327.67"}});
+    n.set("pressure_cmd_b18_b20", 300e5);
+    n->run_ms(100);
+    EXPECT_EQ(n.raw(0x2F0E), to_raw(300.0, printed ? kScalePressCmdPrinted : kScalePercent)) << printed;
+    EXPECT_EQ(n.raw(0x2F0D), to_raw(300.0, kScalePercent)) << printed;  // the input readout keeps 327.67
+  }
+}
+
 }  // namespace
