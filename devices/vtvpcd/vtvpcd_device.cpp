@@ -68,19 +68,19 @@ class VtvpcdDevice::OdParameters final : public ParameterSource {
       if ((spec.index & 0xF000) != 0x2000) continue;  // every manual object is in 0x2000..0x2FFF
       auto& page = pages_[(spec.index >> 8) & 0xF];
       if (page.empty()) page.resize(256);
-      page[spec.index & 0xFF] = devices::BoundEntry(od.entry(spec.index, 0));
+      page[spec.index & 0xFF] = devices::IntegerEntry(od.entry(spec.index, 0));
     }
   }
   std::int64_t raw(std::uint16_t index) const override {
     if ((index & 0xF000) != 0x2000) return 0;
     const auto& page = pages_[(index >> 8) & 0xF];
     if (page.empty()) return 0;
-    const devices::BoundEntry& e = page[index & 0xFF];
+    const devices::IntegerEntry& e = page[index & 0xFF];
     return e ? e.as<std::int64_t>() : 0;
   }
 
  private:
-  std::array<std::vector<devices::BoundEntry>, 16> pages_;
+  std::array<std::vector<devices::IntegerEntry>, 16> pages_;
 };
 
 // ---- construction -------------------------------------------------------------------------------
@@ -348,7 +348,7 @@ void VtvpcdDevice::control_cycle(double dt_s) {
 }
 
 void VtvpcdDevice::OutputSlot::bind(canopen::OdEntry* e, Scale eu_scale) {
-  entry = devices::BoundEntry(e);
+  entry = devices::IntegerEntry(e);
   scale = eu_scale;
   const bool is_signed = canopen::is_signed_integer(e->type);
   const int bits = static_cast<int>(e->value.size() * 8);

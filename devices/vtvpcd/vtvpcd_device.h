@@ -98,7 +98,7 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   /// EU value, and the EU value it was last converted from (the conversion is skipped while that
   /// does not change).
   struct OutputSlot {
-    devices::BoundEntry entry;
+    devices::IntegerEntry entry;
     std::int64_t lo = 0, hi = 0;
     Scale scale;
     double last_eu = std::numeric_limits<double>::quiet_NaN();

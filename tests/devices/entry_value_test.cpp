@@ -26,7 +26,7 @@ const std::vector<std::uint64_t> kPatterns = {0,          1,          0x7F,     
                                               0x0123456789ABCDEFull, 0x8000000000000000ull, ~std::uint64_t{0}};
 
 template <typename T>
-void expect_same_read(const canopen::OdEntry& e, const BoundEntry& b) {
+void expect_same_read(const canopen::OdEntry& e, const IntegerEntry& b) {
   EXPECT_EQ(b.as<T>(), e.as<T>()) << "type 0x" << std::hex << static_cast<int>(e.type) << " bytes " << e.value.size();
 }
 
@@ -35,7 +35,7 @@ TEST(EntryValue, ReadsAsOdEntryAsDoes) {
   std::uint16_t index = 0x2000;
   for (DataType type : kTypes) {
     auto& e = od.add_var(index++, "v", type, Access::ReadWrite, Bytes(canopen::type_size(type), 0));
-    const BoundEntry b(&e);
+    const IntegerEntry b(&e);
     for (std::uint64_t p : kPatterns) {
       canopen::encode_unsigned(p, e.value);
       EXPECT_EQ(entry_bits(e), canopen::decode_unsigned(e.value));
@@ -55,9 +55,9 @@ TEST(EntryValue, RealEntriesTakeTheGenericPath) {
   canopen::ObjectDictionary od;
   auto& e32 = od.add_var<float>(0x2000, "r32", DataType::Real32, Access::ReadWrite, -12.75f);
   auto& e64 = od.add_var<double>(0x2001, "r64", DataType::Real64, Access::ReadWrite, 1e10);
-  EXPECT_EQ(BoundEntry(&e32).as<std::int32_t>(), e32.as<std::int32_t>());
-  EXPECT_EQ(BoundEntry(&e32).as<std::int32_t>(), -12);
-  EXPECT_EQ(BoundEntry(&e64).as<std::int64_t>(), e64.as<std::int64_t>());
+  EXPECT_EQ(IntegerEntry(&e32).as<std::int32_t>(), e32.as<std::int32_t>());
+  EXPECT_EQ(IntegerEntry(&e32).as<std::int32_t>(), -12);
+  EXPECT_EQ(IntegerEntry(&e64).as<std::int64_t>(), e64.as<std::int64_t>());
 }
 
 TEST(EntryValue, StoresAsEncodeUnsignedDoes) {
@@ -69,7 +69,7 @@ TEST(EntryValue, StoresAsEncodeUnsignedDoes) {
       e.value = Bytes(n, 0xA5);
       Bytes expected(n, 0xA5);
       canopen::encode_unsigned(p, expected);
-      BoundEntry(&e).store(p);
+      IntegerEntry(&e).store(p);
       EXPECT_EQ(e.value, expected) << "type 0x" << std::hex << static_cast<int>(type) << " value " << p;
       e.value = Bytes(n, 0x5A);
       store_entry_bits(e, p);
@@ -80,16 +80,16 @@ TEST(EntryValue, StoresAsEncodeUnsignedDoes) {
   canopen::OdEntry e;
   e.type = DataType::Integer16;
   e.value = Bytes(2, 0);
-  BoundEntry(&e).store(std::int32_t{-2});
+  IntegerEntry(&e).store(std::int32_t{-2});
   EXPECT_EQ(e.value, (Bytes{0xFE, 0xFF}));
-  EXPECT_EQ(BoundEntry(&e).as<std::int32_t>(), -2);
+  EXPECT_EQ(IntegerEntry(&e).as<std::int32_t>(), -2);
 }
 
 TEST(EntryValue, AReplacedValueVectorIsReadAfresh) {
   // Writes and resets may assign a new vector; the bound entry holds the entry, not its bytes.
   canopen::ObjectDictionary od;
   auto& e = od.add_var<std::uint32_t>(0x2000, "v", DataType::Unsigned32, Access::ReadWrite, 7u);
-  const BoundEntry b(&e);
+  const IntegerEntry b(&e);
   e.assign<std::uint32_t>(0xDEADBEEFu);
   EXPECT_EQ(b.as<std::uint32_t>(), 0xDEADBEEFu);
   od.set<std::uint32_t>(0x2000, 0, 42u);

@@ -51,13 +51,13 @@ void CamUnit::add_objects(ObjectDictionary& od) {
 }
 
 void CamUnit::bind(ObjectDictionary& od, SdoAbort abort) {
-  state_ = devices::BoundEntry(od.entry(kState, 1));
-  enable_ = devices::BoundEntry(od.entry(kEnable, 1));
-  polarity_ = devices::BoundEntry(od.entry(kPolarity, 1));
+  state_ = devices::IntegerEntry(od.entry(kState, 1));
+  enable_ = devices::IntegerEntry(od.entry(kEnable, 1));
+  polarity_ = devices::IntegerEntry(od.entry(kPolarity, 1));
   for (int k = 0; k < kCams; ++k) {
-    low_[k] = devices::BoundEntry(od.entry(static_cast<std::uint16_t>(kLowLimit + k), 1));
-    high_[k] = devices::BoundEntry(od.entry(static_cast<std::uint16_t>(kHighLimit + k), 1));
-    hysteresis_[k] = devices::BoundEntry(od.entry(static_cast<std::uint16_t>(kHysteresis + k), 1));
+    low_[k] = devices::IntegerEntry(od.entry(static_cast<std::uint16_t>(kLowLimit + k), 1));
+    high_[k] = devices::IntegerEntry(od.entry(static_cast<std::uint16_t>(kHighLimit + k), 1));
+    hysteresis_[k] = devices::IntegerEntry(od.entry(static_cast<std::uint16_t>(kHysteresis + k), 1));
     const OdEntry* high = high_[k].entry();
     od.add_check(static_cast<std::uint16_t>(kLowLimit + k), 1,
                  [high, abort](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {

@@ -41,8 +41,8 @@ class CamUnit {
 
  private:
   std::array<Cam, kCams> cams_{};
-  devices::BoundEntry state_, enable_, polarity_;
-  std::array<devices::BoundEntry, kCams> low_{}, high_{}, hysteresis_{};
+  devices::IntegerEntry state_, enable_, polarity_;
+  std::array<devices::IntegerEntry, kCams> low_{}, high_{}, hysteresis_{};
 };
 
 }  // namespace cia406

@@ -26,9 +26,9 @@ void WorkArea::add_objects(canopen::ObjectDictionary& od, std::int32_t default_l
 }
 
 void WorkArea::bind(canopen::ObjectDictionary& od) {
-  state_ = devices::BoundEntry(od.entry(kState, 1));
-  low_ = devices::BoundEntry(od.entry(kLowLimit, 1));
-  high_ = devices::BoundEntry(od.entry(kHighLimit, 1));
+  state_ = devices::IntegerEntry(od.entry(kState, 1));
+  low_ = devices::IntegerEntry(od.entry(kLowLimit, 1));
+  high_ = devices::IntegerEntry(od.entry(kHighLimit, 1));
 }
 
 std::uint8_t WorkArea::update(std::int64_t x) {

@@ -26,7 +26,7 @@ class WorkArea {
   std::uint8_t update(std::int64_t x);
 
  private:
-  devices::BoundEntry state_, low_, high_;
+  devices::IntegerEntry state_, low_, high_;
 };
 
 }  // namespace cia406
