@@ -47,6 +47,8 @@ int Bus::attach(FrameReceiver* receiver) {
   endpoints_.emplace_back();
   endpoints_.back().receiver = receiver;
   tx_pending_.resize((endpoints_.size() + 63) / 64);
+  receivers_.resize(tx_pending_.size());
+  refresh_receiver(static_cast<int>(endpoints_.size()) - 1);
   return static_cast<int>(endpoints_.size()) - 1;
 }
 
@@ -55,6 +57,7 @@ void Bus::set_online(int endpoint, bool online) {
   auto& ep = endpoints_[static_cast<std::size_t>(endpoint)];
   ep.online = online;
   if (!online) tx_clear(endpoint);  // the controller is off: what it had queued is gone
+  refresh_receiver(endpoint);
 }
 
 bool Bus::online(int endpoint) const {
@@ -120,6 +123,17 @@ void Bus::tx_pop(int from) {
 void Bus::tx_clear(int index) {
   endpoints_[static_cast<std::size_t>(index)].tx.clear();
   tx_pending_[static_cast<std::size_t>(index) >> 6] &= ~(1ull << (index & 63));
+  if (in_flight_.active && in_flight_.from == index) in_flight_.head = false;
+}
+
+void Bus::refresh_receiver(int index) {
+  const std::uint64_t bit = 1ull << (index & 63);
+  auto& word = receivers_[static_cast<std::size_t>(index) >> 6];
+  if (participates(index) && endpoints_[static_cast<std::size_t>(index)].receiver != nullptr) {
+    word |= bit;
+  } else {
+    word &= ~bit;
+  }
 }
 
 void Bus::release_delayed(Time now) {
@@ -142,7 +156,7 @@ void Bus::release_delayed(Time now) {
   delayed_.erase(delayed_.begin(), due_end);
 }
 
-std::size_t Bus::deliver(Time now) {
+std::size_t Bus::deliver_due(Time now) {
   const std::int64_t now_ns = ns_of(now);
   now_ns_ = std::max(now_ns_, now_ns);
   if (!delayed_.empty()) release_delayed(now);
@@ -172,7 +186,7 @@ std::size_t Bus::deliver(Time now) {
 
 void Bus::deliver_one(const Pending& p, Time now) {
   const std::int64_t at_ns = std::max(ns_of(now), idle_ns_);
-  const FrameBits bits = frame_bits(p.frame);
+  const FrameBits bits = bits_cache_.get(p.frame);
   // Attempts at zero duration: each destroyed one costs an error frame and counts.
   if (filter_ && p.from != kWire) {
     while (filter_->on_transmit(p.frame, p.from, now)) {
@@ -261,9 +275,10 @@ bool Bus::start_next(std::int64_t now_ns) {
     for (auto& ep : endpoints_) ep.recessive_ns = 0;
 
   const CanFrame& frame = endpoint_of(winner)->tx.front().frame;
-  const FrameBits bits = frame_bits(frame);
+  const FrameBits bits = bits_cache_.get(frame);
   InFlight f;
   f.active = true;
+  f.head = true;
   f.from = winner;
   f.frame = frame;
   f.start_ns = start;
@@ -296,7 +311,9 @@ void Bus::complete(Time at) {
     receive_result(f.from, true, at);
   } else {
     // The frame leaves the queue only now: a destroyed one is retransmitted automatically.
-    if (!sender->tx.empty() && same_frame(sender->tx.front().frame, f.frame)) tx_pop(f.from);
+    // Still the head unless the queue was cleared meanwhile; then the original test: the head
+    // equal to the frame.
+    if (!sender->tx.empty() && (f.head || same_frame(sender->tx.front().frame, f.frame))) tx_pop(f.from);
     ++stats_.frames;
     if (f.from == kWire) ++stats_.from_wire;
     if (!taps_.empty()) {
@@ -311,10 +328,19 @@ void Bus::complete(Time at) {
     sender->suspend_until_ns = f.end_ns + static_cast<std::int64_t>(kSuspendTransmissionBits) * bit_ns();
   recessive_sequences(1, at);  // ACK delimiter + EOF + intermission, or error delimiter + intermission
   if (f.error) return;
-  for (std::size_t i = 0; i < endpoints_.size(); ++i) {
-    const auto& ep = endpoints_[i];
-    if (static_cast<int>(i) == f.from || !participates(static_cast<int>(i)) || ep.receiver == nullptr) continue;
-    ep.receiver->on_frame(f.frame, at);
+  // Every endpoint that takes frames, in order; the mask is read as the loop goes, since a
+  // receiver may take another endpoint off the bus.
+  for (std::size_t i = 0;;) {
+    const std::size_t w = i >> 6;
+    if (w >= receivers_.size()) break;
+    const std::uint64_t bits = receivers_[w] & (~0ull << (i & 63));
+    if (bits == 0) {
+      i = (w + 1) << 6;
+      continue;
+    }
+    i = (w << 6) + static_cast<std::size_t>(std::countr_zero(bits));
+    if (static_cast<int>(i) != f.from) endpoints_[i].receiver->on_frame(f.frame, at);
+    ++i;
   }
 }
 
@@ -366,6 +392,7 @@ void Bus::update_state(int index, Time at) {
     ++c.bus_off_events;
     ++bus_off_count_;
     tx_clear(index);
+    refresh_receiver(index);
     ep.recessive_ns = 0;
     ep.recovery_sequences = 0;
   }
@@ -387,6 +414,7 @@ void Bus::add_recovery(int index, unsigned sequences, Time at) {
   ep.counters.rec = 0;
   ep.counters.state = ErrorState::Active;
   --bus_off_count_;
+  refresh_receiver(index);
   ep.recovery_sequences = 0;
   ep.recessive_ns = 0;
   notify(index, ErrorState::Active, at);

@@ -16,12 +16,14 @@
 // neither sending nor receiving), back to error-active after 128 sequences of 11 recessive bits.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "sim/can_bit_timing.h"
 #include "sim/can_frame.h"
 #include "sim/ring_buffer.h"
 #include "sim/time.h"
@@ -130,7 +132,7 @@ class Bus {
 
   /// Delivers queued frames to endpoints, the transport and taps, until no frame is left that
   /// is due at `now`. Replies produced while delivering are delivered in the same call.
-  std::size_t deliver(Time now);
+  std::size_t deliver(Time now) { return quiet_at(now.time_since_epoch().count() * 1000) ? 0 : deliver_due(now); }
 
   /// Reads everything the transport has received and queues it. Returns the number read.
   std::size_t poll_transport(Time now);
@@ -171,6 +173,7 @@ class Bus {
     std::int64_t deliver_ns = 0;  ///< end of EOF (or of the error frame)
     std::int64_t end_ns = 0;      ///< bus free again (after intermission)
     unsigned bits = 0;
+    bool head = false;  ///< still the head of the sender's queue (not cleared since it started)
   };
   struct Delayed {
     Pending pending;
@@ -186,6 +189,19 @@ class Bus {
     ErrorCounters counters;
   };
 
+  /// True when deliver() at `now_ns` has nothing to do: time has not moved since the last call,
+  /// no frame is due, the idle time is counted and there is no transport to service. The
+  /// scheduler calls deliver() after every component; most calls end here.
+  bool quiet_at(std::int64_t now_ns) const {
+    if (now_ns > now_ns_ || transport_ || !delayed_.empty()) return false;
+    if (timing_ == BusTiming::Ideal) {
+      if (!queue_.empty()) return false;
+    } else if (in_flight_.active ? in_flight_.deliver_ns <= now_ns : std::max(idle_ns_, ready_floor_ns_) < now_ns) {
+      return false;
+    }
+    return in_flight_.active || now_ns <= std::max(idle_ns_, idle_accounted_ns_);
+  }
+  std::size_t deliver_due(Time now);
   void deliver_one(const Pending& p, Time now);
   void deliver_timed(Time now, std::size_t& n);
   bool start_next(std::int64_t now_ns);
@@ -193,6 +209,8 @@ class Bus {
   void tx_push(int from, const Queued& q);
   void tx_pop(int from);
   void tx_clear(int index);
+  // receivers_: endpoints that take frames (a receiver, online, not bus-off), a bit each.
+  void refresh_receiver(int index);
   void complete(Time now);
   void release_delayed(Time now);
   Endpoint* endpoint_of(int from) { return from == kWire ? &wire_ : &endpoints_[static_cast<std::size_t>(from)]; }
@@ -229,6 +247,8 @@ class Bus {
   // Endpoints whose transmit queue holds a frame, a bit each (the wire's queue is wire_.tx), so
   // arbitration looks only at queues with something in them.
   std::vector<std::uint64_t> tx_pending_;
+  std::vector<std::uint64_t> receivers_;
+  FrameBitsCache bits_cache_;
   // No queue head is ready before this instant (a lower bound: exact after start_next() scanned
   // the queues, lowered when a head appears): deliver() skips the queues while it is >= now.
   std::int64_t ready_floor_ns_ = std::numeric_limits<std::int64_t>::max();

@@ -4,7 +4,10 @@
 // and delimiter, EOF and the 3-bit intermission. Pure functions; the bus times frames with them.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include "sim/can_frame.h"
 
@@ -31,6 +34,32 @@ std::uint16_t can_crc15(const std::uint8_t* bits, unsigned count);
 
 /// The frame's exact bit count and where they come from.
 FrameBits frame_bits(const CanFrame& frame);
+
+/// frame_bits() of recently seen frames: the bus times every frame, and most repeat exactly
+/// (SYNC, heartbeats, PDOs whose values did not change). Direct-mapped by identifier; an entry
+/// answers only for a frame equal in identifier, format, DLC and all eight data bytes.
+class FrameBitsCache {
+ public:
+  FrameBits get(const CanFrame& frame) {
+    const std::uint64_t meta = std::uint64_t{frame.id} | std::uint64_t{frame.dlc} << 32 |
+                               std::uint64_t{frame.extended} << 40 | std::uint64_t{frame.rtr} << 41 | kValid;
+    std::uint64_t data;
+    std::memcpy(&data, frame.data.data(), sizeof data);
+    Entry& e = entries_[(frame.id ^ (frame.id >> 7) ^ (frame.id >> 14)) % kEntries];
+    if (e.meta != meta || e.data != data) e = Entry{meta, data, frame_bits(frame)};
+    return e.bits;
+  }
+
+ private:
+  static constexpr std::uint64_t kValid = 1ull << 42;
+  static constexpr std::size_t kEntries = 64;
+  struct Entry {
+    std::uint64_t meta = 0;  // identifier, DLC, format; 0: empty
+    std::uint64_t data = 0;
+    FrameBits bits;
+  };
+  std::array<Entry, kEntries> entries_{};
+};
 
 /// The arbitration order key: the arbitration field's bits (ID, RTR/SRR, IDE, extended ID,
 /// RTR) as one number; the lower key wins arbitration, since dominant is 0.

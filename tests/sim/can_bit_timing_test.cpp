@@ -1,10 +1,12 @@
-// Frame lengths against hand-computed bit counts (ISO 11898-1 framing, CRC-15, bit stuffing).
+// Frame lengths against hand-computed bit counts (ISO 11898-1 framing, CRC-15, bit stuffing) and
+// against a bit-by-bit reference implementation kept here.
 #include "sim/can_bit_timing.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <random>
+#include <vector>
 
 namespace {
 
@@ -211,4 +213,38 @@ TEST(CanBitTiming, Crc15MatchesFrameCrc) {
   put(8, 4);
   for (auto b : f.data) put(b, 8);
   EXPECT_EQ(sim::can_crc15(bits.data(), n), frame_bits(f).crc);
+}
+
+// The bus's cache of frame lengths answers what frame_bits() would, also for frames that differ
+// from a cached one only in a data byte, the DLC, the format or RTR, and for colliding slots.
+TEST(CanBitTiming, CacheAgreesWithFrameBits) {
+  std::mt19937 rng(7);
+  sim::FrameBitsCache cache;
+  std::vector<CanFrame> seen;
+  for (int i = 0; i < 50000; ++i) {
+    CanFrame f;
+    if (!seen.empty() && rng() % 2 == 0) {
+      f = seen[rng() % seen.size()];
+      switch (rng() % 6) {
+        case 0: f.data[rng() % 8] ^= static_cast<std::uint8_t>(1u << (rng() % 8)); break;
+        case 1: f.dlc = static_cast<std::uint8_t>(rng() % 9); break;
+        case 2: f.extended = !f.extended; break;
+        case 3: f.rtr = !f.rtr; break;
+        case 4: f.id ^= 64u << (rng() % 4); break;  // another identifier, maybe the same slot
+        default: break;                             // the same frame again
+      }
+    } else {
+      f.extended = rng() % 4 == 0;
+      f.id = f.extended ? rng() & CanFrame::kMaxExtId : rng() & CanFrame::kMaxStdId;
+      f.rtr = rng() % 8 == 0;
+      f.dlc = static_cast<std::uint8_t>(rng() % 9);
+      for (auto& b : f.data) b = static_cast<std::uint8_t>(rng() % 3 == 0 ? 0 : rng());
+      if (seen.size() < 64) seen.push_back(f);
+    }
+    const auto cached = cache.get(f);
+    const auto direct = frame_bits(f);
+    ASSERT_EQ(cached.stuffed_region, direct.stuffed_region) << i;
+    ASSERT_EQ(cached.stuff_bits, direct.stuff_bits) << i;
+    ASSERT_EQ(cached.crc, direct.crc) << i;
+  }
 }
