@@ -3,7 +3,6 @@
 #include <thread>
 
 #include "devices/canopen/emergency.h"
-#include "devices/md2/md2.h"
 #include "engine/scenario.h"
 #include "engine/world.h"
 #include "sim/scheduler.h"
@@ -112,8 +111,6 @@ void SimBridge::attach(const scenario::RunContext& context) {
 
   const auto n = world.nodes().size();
   work_.resize(n);
-  md2_.assign(n, nullptr);
-  for (std::size_t i = 0; i < n; ++i) md2_[i] = dynamic_cast<md2::Md2*>(world.nodes()[i].device.get());
   pdo_work_.assign(n, std::vector<PdoMap>(2 * kMaxPdos));
   for (const auto& node : world.nodes())
     for (const auto& p : node.ports) signals_.push_back({node.spec->name + "." + p.name, p.unit, p.value});
@@ -403,10 +400,10 @@ void SimBridge::publish_nodes(std::int64_t now, bool wait) {
     const auto before = st.profile.transitions;
     st.profile = dev.profile_status();
     if (st.profile.transitions != before) st.transition_t_us = now;
-    if (auto* md2 = md2_[i]) {
-      st.channel_count = static_cast<std::uint8_t>(std::min<int>(md2->options().channels, NodeStatus::kMaxChannels));
+    if (const int channels = dev.profile_channel_count(); channels > 0) {
+      st.channel_count = static_cast<std::uint8_t>(std::min<int>(channels, NodeStatus::kMaxChannels));
       for (std::size_t c = 0; c < st.channel_count; ++c) {
-        const auto p = md2->md2_channel(static_cast<int>(c) + 1).control().profile_status();
+        const auto p = dev.channel_profile_status(static_cast<int>(c) + 1);
         auto& ch = st.channels[c];
         if (p.transitions != ch.transitions) ch.transition_t_us = now;
         ch.state = p.state;

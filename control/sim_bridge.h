@@ -31,10 +31,6 @@
 #include "engine/sdo_client.h"
 #include "sim/bus.h"
 
-namespace md2 {
-class Md2;
-}
-
 namespace control {
 
 struct ClockOptions {
@@ -199,7 +195,6 @@ class SimBridge final : public scenario::RunExtension {
   std::atomic<std::uint64_t> node_version_{0};
   bool dirty_ = false;
   std::vector<std::array<int, 128>> node_by_id_;  ///< per bus: node-ID → node index (-1)
-  std::vector<md2::Md2*> md2_;                    ///< per node: the MD2 (its channels), else null
 
   // PDO maps.
   std::vector<std::vector<PdoMap>> pdo_work_, pdo_published_;

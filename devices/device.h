@@ -50,6 +50,11 @@ class Device {
 
   /// The device profile's state now (on the scheduler's thread; allocates nothing).
   virtual ProfileStatus profile_status() { return {}; }
+  /// Devices with one profile state machine per axis (the MD2's channels) say how many, and
+  /// profile_status() shows the first; 0 = one device-level profile only.
+  virtual int profile_channel_count() const { return 0; }
+  /// Channel `channel` (1-based, up to profile_channel_count()); empty for anything else.
+  virtual ProfileStatus channel_profile_status(int /*channel*/) { return {}; }
 
   /// Power cycle as a scenario sees it. Devices with state that survives power-off (multiturn
   /// counters, non-volatile memory) override and keep it.

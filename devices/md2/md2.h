@@ -38,6 +38,11 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
   std::string inject_fault(std::string_view name, bool active) override;
   /// Channel 1's device state.
   devices::ProfileStatus profile_status() override { return channels_.front()->control().profile_status(); }
+  int profile_channel_count() const override { return options_.channels; }
+  devices::ProfileStatus channel_profile_status(int channel) override {
+    if (channel < 1 || channel > static_cast<int>(channels_.size())) return {};
+    return md2_channel(channel).control().profile_status();
+  }
 
   const Md2Options& options() const { return options_; }
   Md2Channel& md2_channel(int c) { return *channels_[static_cast<std::size_t>(c - 1)]; }

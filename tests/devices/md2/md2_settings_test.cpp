@@ -149,4 +149,17 @@ TEST_F(Md2Test, PortsAndFaultNames) {
   for (const auto& f : dev->faults()) EXPECT_EQ(dev->inject_fault(f.name, false), "") << f.name;
 }
 
+// The control plane sees each channel's state machine through Device, not through the MD2 type.
+TEST_F(Md2Test, SettingChannelsAreTheProfileChannels) {
+  devices::Device& device = *dev;
+  ASSERT_EQ(device.profile_channel_count(), 8);  // the factory default
+  EXPECT_EQ(device.channel_profile_status(1).state, device.profile_status().state);
+  EXPECT_EQ(device.channel_profile_status(8).profile, devices::ProfileStatus::Profile::Dsp408);
+  EXPECT_EQ(device.channel_profile_status(9).profile, devices::ProfileStatus::Profile::Generic);
+  EXPECT_EQ(device.channel_profile_status(0).profile, devices::ProfileStatus::Profile::Generic);
+  make({{"channels", "1"}});
+  EXPECT_EQ(dev->profile_channel_count(), 1);
+  EXPECT_EQ(dev->channel_profile_status(2).profile, devices::ProfileStatus::Profile::Generic);
+}
+
 }  // namespace md2test
