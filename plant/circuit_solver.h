@@ -99,7 +99,7 @@ class CircuitSolver {
   // plain loops over row-major storage, W assembled straight into the LU's storage.
   std::vector<double> r_, r0_, f_, k1_, k2_, y_, scale_;
   std::vector<double> g_;  // n x n row-major: d(residual)/d(state) of the last Jacobian evaluation
-  std::vector<char> pattern_;  // n x n: the entries of g (and so of W) any stamp has written so far
+  std::vector<std::uint16_t> pattern_;  // n x n: the entries of g (and so of W) any stamp has written so far
   bool pattern_grew_ = false;
   SmallLu lu_;             // holds W = I - gamma h J, then its factors
 

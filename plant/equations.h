@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "plant/circuit_state.h"
@@ -29,7 +30,7 @@ class Equations {
 
   /// Jacobian mode needs this: each entry of the Jacobian a stamp writes is marked in `pattern`
   /// (row-major, like the Jacobian), and `grew` set when one was not marked before.
-  void record_pattern(std::vector<char>& pattern, bool& grew) {
+  void record_pattern(std::vector<std::uint16_t>& pattern, bool& grew) {
     pattern_ = pattern.data();
     grew_ = &grew;
   }
@@ -108,13 +109,13 @@ class Equations {
   Mode mode_;
   double& g(int row, int column) {
     const std::size_t i = static_cast<std::size_t>(row) * n_ + static_cast<std::size_t>(column);
-    if (pattern_[i] == 0) [[unlikely]]
-      mark(i);
+    // Marked in place (no call, and not through a char type, which may alias anything): the
+    // compiler keeps the stamps' other values in registers across it.
+    if (pattern_[i] == 0) [[unlikely]] {
+      pattern_[i] = 1;
+      *grew_ = true;
+    }
     return g_[i];
-  }
-  [[gnu::noinline]] void mark(std::size_t i) {
-    pattern_[i] = 1;
-    *grew_ = true;
   }
 
   double* r_;
@@ -123,7 +124,7 @@ class Equations {
   std::vector<double>& dry_static_;
   std::vector<double>& dry_kinetic_;
   std::array<double, kEnergyKinds>& power_;
-  char* pattern_ = nullptr;
+  std::uint16_t* pattern_ = nullptr;
   bool* grew_ = nullptr;
 };
 
