@@ -242,21 +242,19 @@ void CircuitSolver::advance(double h, int depth) {
   for (int b = 0; b < nv_; ++b)
     stage_.velocity[static_cast<std::size_t>(b)] = state_.velocity[static_cast<std::size_t>(b)] + h * k1_[np_ + b];
   evaluate(stage_, Equations::Mode::Residual);
+  // f(y + h k1) - 2 k1
   for (int i = 0; i < np_; ++i) {
     const auto iu = static_cast<std::size_t>(i);
-    if (cavitating_[iu]) {
-      f_[i] = 0.0;
-    } else {
-      // (beta / V as at the step's start when beta is a constant)
-      f_[i] = (air_free_ ? scale_[iu] : fluid_.bulk_modulus(stage_.pressure[iu]) / volume_[iu]) * r_[i];
-    }
+    double f = 0.0;
+    // (beta / V as at the step's start when beta is a constant)
+    if (!cavitating_[iu]) f = (air_free_ ? scale_[iu] : fluid_.bulk_modulus(stage_.pressure[iu]) / volume_[iu]) * r_[i];
+    f_[i] = f - 2.0 * k1_[i];
   }
   for (int b = 0; b < nv_; ++b) {
     const auto bu = static_cast<std::size_t>(b);
     const int row = np_ + b;
-    f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
+    f_[row] = (held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row]) - 2.0 * k1_[row];
   }
-  for (std::size_t i = 0; i < n; ++i) f_[i] -= 2.0 * k1_[i];
   lu_.solve(f_.data(), k2_.data());
   for (std::size_t i = 0; i < n; ++i) y_[i] = (1.5 * h) * k1_[i] + (0.5 * h) * k2_[i];  // increment over the step
 

@@ -83,7 +83,9 @@ class CircuitSolver {
   bool air_free_ = false;               // the fluid's bulk modulus is a constant, beta_liquid_
   double beta_liquid_ = 0.0;
   std::vector<double> vapour_;          // per pressure state: vapour volume of a cavitating node, m^3
-  std::vector<char> cavitating_;        // per pressure state, this step
+  // Flags as uint16_t, not char: a store through a char type may alias anything, and would make
+  // the compiler reload every vector's data pointer in the loops that set them.
+  std::vector<std::uint16_t> cavitating_;  // per pressure state, this step
   std::vector<double> start_pressure_;  // pressures at the start of the step
   std::vector<double> mass_;    // per body
   std::vector<double> inverse_mass_;
@@ -91,7 +93,7 @@ class CircuitSolver {
   std::vector<double> friction_;        // dry friction force used in the solve, per body
   std::vector<double> friction_limit_;  // force limit handed to ODE, per body
   std::vector<double> ode_force_;
-  std::vector<char> held_;
+  std::vector<std::uint16_t> held_;
   std::array<double, kEnergyKinds> power_{};  // scratch for Residual/Jacobian modes
   std::array<double, kEnergyKinds> power_start_{}, power_end_{};
 

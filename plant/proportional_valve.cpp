@@ -80,6 +80,7 @@ double ProportionalValve::commanded_position(double current_a, double current_b)
 
 double ProportionalValve::opening(double s) const {
   const double overlap = parameter(kOverlap);
+  if (s < overlap) return 0.0;  // closed (what the clamp below gives), without the division
   return std::clamp((s - overlap) / (1.0 - overlap), 0.0, 1.0);
 }
 
