@@ -54,11 +54,11 @@ class Equations {
     if (ts) r_[to.index] += q;
     if (mode_ == Mode::Jacobian) {
       if (fs) {
-        g(from.index, from.index) -= dq_ddp;
+        diagonal(from.index) -= dq_ddp;
         if (ts) g(from.index, to.index) += dq_ddp;
       }
       if (ts) {
-        g(to.index, to.index) -= dq_ddp;
+        diagonal(to.index) -= dq_ddp;
         if (fs) g(to.index, from.index) += dq_ddp;
       }
     }
@@ -89,7 +89,7 @@ class Equations {
     }
     const int row = dof_row(dof);
     r_[row] += f;
-    if (mode_ == Mode::Jacobian) g(row, row) += df_dv;
+    if (mode_ == Mode::Jacobian) diagonal(row) += df_dv;
   }
 
   /// Dry (Coulomb/Stribeck) friction on a body: the levels it can hold at rest and while sliding.
@@ -117,6 +117,8 @@ class Equations {
     }
     return g_[i];
   }
+  // The diagonal is in the pattern from the start (the solver marks it), so needs no check.
+  double& diagonal(int row) { return g_[static_cast<std::size_t>(row) * (n_ + 1)]; }
 
   double* r_;
   double* g_;
