@@ -84,6 +84,8 @@ void CircuitSolver::refresh() {
   for (const Component* c : moving_volumes_) c->add_volumes(state_, volume_);
   air_free_ = fluid_.parameter(Fluid::kAirFraction) <= 0.0;
   beta_liquid_ = fluid_.bulk_modulus(0.0);
+  cavitation_pressure_ = fluid_.cavitation_pressure();
+  cavitation_beta_ = fluid_.bulk_modulus(cavitation_pressure_);
 }
 
 void CircuitSolver::evaluate(const CircuitState& s, Equations::Mode m) {
@@ -165,11 +167,14 @@ void CircuitSolver::classify_bodies() {
 }
 
 void CircuitSolver::classify_nodes() {
-  const double p_cav = fluid_.cavitation_pressure();
-  for (int i = 0; i < np_; ++i) {
-    const auto iu = static_cast<std::size_t>(i);
+  const double floor = cavitation_pressure_ + kCavitationTolerance;
+  const double* const vapour = vapour_.data();
+  const double* const pressure = state_.pressure.data();
+  const double* const inflow = r_.data();
+  std::uint16_t* const cavitating = cavitating_.data();
+  for (std::size_t i = 0; i < static_cast<std::size_t>(np_); ++i) {
     // Cavitating: vapour is present, or the node sits at the vapour pressure and is being drained.
-    cavitating_[iu] = vapour_[iu] > 0.0 || (state_.pressure[iu] <= p_cav + kCavitationTolerance && r_[i] < 0.0);
+    cavitating[i] = vapour[i] > 0.0 || (pressure[i] <= floor && inflow[i] < 0.0);
   }
 }
 
@@ -342,8 +347,8 @@ void CircuitSolver::advance(double h, int depth) {
 // and a node that the step took below the cavitation pressure is brought back to it, the
 // shortfall becoming vapour. Both keep the fluid volume balance exact.
 void CircuitSolver::settle_vapour() {
-  const double p_cav = fluid_.cavitation_pressure();
-  const double beta_cav = fluid_.bulk_modulus(p_cav);
+  const double p_cav = cavitation_pressure_;
+  const double beta_cav = cavitation_beta_;
   for (int i = 0; i < np_; ++i) {
     const auto iu = static_cast<std::size_t>(i);
     double& p = state_.pressure[iu];
@@ -368,17 +373,21 @@ void CircuitSolver::settle_vapour() {
 // any state's estimate exceeds its tolerance.
 bool CircuitSolver::error_too_large(double h) const {
   const auto np = static_cast<std::size_t>(np_), nv = static_cast<std::size_t>(nv_);
+  const double* const k1 = k1_.data();
+  const double* const k2 = k2_.data();
+  const double* const pressure = state_.pressure.data();
+  const double* const velocity = state_.velocity.data();
+  const double half_h = 0.5 * h;
+  bool too_large = false;  // (no early exit: almost every step is accepted, and this keeps the loop branch-free)
   for (std::size_t i = 0; i < np; ++i) {
-    if (cavitating_[i]) continue;
-    const double tolerance = kPressureTolerance + kRelativeTolerance * std::abs(state_.pressure[i]);
-    if (std::abs(0.5 * h * (k1_[i] + k2_[i])) > tolerance) return true;
+    const double tolerance = kPressureTolerance + kRelativeTolerance * std::abs(pressure[i]);
+    too_large |= !cavitating_[i] && std::abs(half_h * (k1[i] + k2[i])) > tolerance;
   }
   for (std::size_t b = 0; b < nv; ++b) {
-    if (held_[b]) continue;
-    const double tolerance = kSpeedTolerance + kRelativeTolerance * std::abs(state_.velocity[b]);
-    if (std::abs(0.5 * h * (k1_[np + b] + k2_[np + b])) > tolerance) return true;
+    const double tolerance = kSpeedTolerance + kRelativeTolerance * std::abs(velocity[b]);
+    too_large |= !held_[b] && std::abs(half_h * (k1[np + b] + k2[np + b])) > tolerance;
   }
-  return false;
+  return too_large;
 }
 
 double CircuitSolver::compression_energy(double volume, double p0, double p1) const {

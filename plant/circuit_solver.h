@@ -82,6 +82,8 @@ class CircuitSolver {
   std::vector<double> fixed_volume_;    // per node: the part that does not follow body positions, m^3
   bool air_free_ = false;               // the fluid's bulk modulus is a constant, beta_liquid_
   double beta_liquid_ = 0.0;
+  double cavitation_pressure_ = 0.0;    // the fluid's, and its bulk modulus there (from refresh())
+  double cavitation_beta_ = 0.0;
   std::vector<double> vapour_;          // per pressure state: vapour volume of a cavitating node, m^3
   // Flags as uint16_t, not char: a store through a char type may alias anything, and would make
   // the compiler reload every vector's data pointer in the loops that set them.
