@@ -77,6 +77,7 @@ void CircuitSolver::refresh() {
   for (std::size_t b = 0; b < mass_.size(); ++b) inverse_mass_[b] = 1.0 / mass_[b];
   // Boundary pressures and the volumes that do not move change only with the parameters.
   for (const Component* c : components_) c->fix_pressures(state_);
+  for (std::size_t i = static_cast<std::size_t>(np_); i < state_.pressure.size(); ++i) stage_.pressure[i] = state_.pressure[i];
   std::fill(fixed_volume_.begin(), fixed_volume_.end(), 0.0);
   for (const Component* c : components_)
     if (!c->volumes_move()) c->add_volumes(state_, fixed_volume_);
@@ -241,11 +242,14 @@ void CircuitSolver::advance(double h, int depth) {
   lu_.factor();
   lu_.solve(f_.data(), k1_.data());
 
-  std::copy(state_.pressure.begin(), state_.pressure.end(), stage_.pressure.begin());
-  std::copy(state_.position.begin(), state_.position.end(), stage_.position.begin());
-  for (int i = 0; i < np_; ++i) stage_.pressure[static_cast<std::size_t>(i)] += h * k1_[i];
-  for (int b = 0; b < nv_; ++b)
-    stage_.velocity[static_cast<std::size_t>(b)] = state_.velocity[static_cast<std::size_t>(b)] + h * k1_[np_ + b];
+  // y + h k1 (the boundary pressures are stage_'s since refresh())
+  for (int i = 0; i < np_; ++i)
+    stage_.pressure[static_cast<std::size_t>(i)] = state_.pressure[static_cast<std::size_t>(i)] + h * k1_[i];
+  for (int b = 0; b < nv_; ++b) {
+    const auto bu = static_cast<std::size_t>(b);
+    stage_.position[bu] = state_.position[bu];
+    stage_.velocity[bu] = state_.velocity[bu] + h * k1_[np_ + b];
+  }
   evaluate(stage_, Equations::Mode::Residual);
   // f(y + h k1) - 2 k1
   for (int i = 0; i < np_; ++i) {
