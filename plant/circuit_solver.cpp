@@ -382,7 +382,7 @@ bool CircuitSolver::error_too_large(double h) const {
   const double* const pressure = state_.pressure.data();
   const double* const velocity = state_.velocity.data();
   const double half_h = 0.5 * h;
-  bool too_large = false;  // (no early exit: almost every step is accepted, and this keeps the loop branch-free)
+  bool too_large = false;  // (no early exit: almost every step is accepted)
   for (std::size_t i = 0; i < np; ++i) {
     const double tolerance = kPressureTolerance + kRelativeTolerance * std::abs(pressure[i]);
     too_large |= !cavitating_[i] && std::abs(half_h * (k1[i] + k2[i])) > tolerance;
