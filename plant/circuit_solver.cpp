@@ -77,6 +77,7 @@ void CircuitSolver::refresh() {
   for (std::size_t b = 0; b < mass_.size(); ++b) inverse_mass_[b] = 1.0 / mass_[b];
   // Boundary pressures and the volumes that do not move change only with the parameters.
   for (const Component* c : components_) c->fix_pressures(state_);
+  for (std::size_t i = static_cast<std::size_t>(np_); i < state_.pressure.size(); ++i) stage_.pressure[i] = state_.pressure[i];
   std::fill(fixed_volume_.begin(), fixed_volume_.end(), 0.0);
   for (const Component* c : components_)
     if (!c->volumes_move()) c->add_volumes(state_, fixed_volume_);
@@ -84,6 +85,8 @@ void CircuitSolver::refresh() {
   for (const Component* c : moving_volumes_) c->add_volumes(state_, volume_);
   air_free_ = fluid_.parameter(Fluid::kAirFraction) <= 0.0;
   beta_liquid_ = fluid_.bulk_modulus(0.0);
+  cavitation_pressure_ = fluid_.cavitation_pressure();
+  cavitation_beta_ = fluid_.bulk_modulus(cavitation_pressure_);
 }
 
 void CircuitSolver::evaluate(const CircuitState& s, Equations::Mode m) {
@@ -165,11 +168,14 @@ void CircuitSolver::classify_bodies() {
 }
 
 void CircuitSolver::classify_nodes() {
-  const double p_cav = fluid_.cavitation_pressure();
-  for (int i = 0; i < np_; ++i) {
-    const auto iu = static_cast<std::size_t>(i);
+  const double floor = cavitation_pressure_ + kCavitationTolerance;
+  const double* const vapour = vapour_.data();
+  const double* const pressure = state_.pressure.data();
+  const double* const inflow = r_.data();
+  std::uint16_t* const cavitating = cavitating_.data();
+  for (std::size_t i = 0; i < static_cast<std::size_t>(np_); ++i) {
     // Cavitating: vapour is present, or the node sits at the vapour pressure and is being drained.
-    cavitating_[iu] = vapour_[iu] > 0.0 || (state_.pressure[iu] <= p_cav + kCavitationTolerance && r_[i] < 0.0);
+    cavitating[i] = vapour[i] > 0.0 || (pressure[i] <= floor && inflow[i] < 0.0);
   }
 }
 
@@ -236,27 +242,28 @@ void CircuitSolver::advance(double h, int depth) {
   lu_.factor();
   lu_.solve(f_.data(), k1_.data());
 
-  std::copy(state_.pressure.begin(), state_.pressure.end(), stage_.pressure.begin());
-  std::copy(state_.position.begin(), state_.position.end(), stage_.position.begin());
-  for (int i = 0; i < np_; ++i) stage_.pressure[static_cast<std::size_t>(i)] += h * k1_[i];
-  for (int b = 0; b < nv_; ++b)
-    stage_.velocity[static_cast<std::size_t>(b)] = state_.velocity[static_cast<std::size_t>(b)] + h * k1_[np_ + b];
+  // y + h k1 (the boundary pressures are stage_'s since refresh())
+  for (int i = 0; i < np_; ++i)
+    stage_.pressure[static_cast<std::size_t>(i)] = state_.pressure[static_cast<std::size_t>(i)] + h * k1_[i];
+  for (int b = 0; b < nv_; ++b) {
+    const auto bu = static_cast<std::size_t>(b);
+    stage_.position[bu] = state_.position[bu];
+    stage_.velocity[bu] = state_.velocity[bu] + h * k1_[np_ + b];
+  }
   evaluate(stage_, Equations::Mode::Residual);
+  // f(y + h k1) - 2 k1
   for (int i = 0; i < np_; ++i) {
     const auto iu = static_cast<std::size_t>(i);
-    if (cavitating_[iu]) {
-      f_[i] = 0.0;
-    } else {
-      // (beta / V as at the step's start when beta is a constant)
-      f_[i] = (air_free_ ? scale_[iu] : fluid_.bulk_modulus(stage_.pressure[iu]) / volume_[iu]) * r_[i];
-    }
+    double f = 0.0;
+    // (beta / V as at the step's start when beta is a constant)
+    if (!cavitating_[iu]) f = (air_free_ ? scale_[iu] : fluid_.bulk_modulus(stage_.pressure[iu]) / volume_[iu]) * r_[i];
+    f_[i] = f - 2.0 * k1_[i];
   }
   for (int b = 0; b < nv_; ++b) {
     const auto bu = static_cast<std::size_t>(b);
     const int row = np_ + b;
-    f_[row] = held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row];
+    f_[row] = (held_[bu] ? 0.0 : (r_[row] + friction_[bu]) * scale_[row]) - 2.0 * k1_[row];
   }
-  for (std::size_t i = 0; i < n; ++i) f_[i] -= 2.0 * k1_[i];
   lu_.solve(f_.data(), k2_.data());
   for (std::size_t i = 0; i < n; ++i) y_[i] = (1.5 * h) * k1_[i] + (0.5 * h) * k2_[i];  // increment over the step
 
@@ -344,8 +351,8 @@ void CircuitSolver::advance(double h, int depth) {
 // and a node that the step took below the cavitation pressure is brought back to it, the
 // shortfall becoming vapour. Both keep the fluid volume balance exact.
 void CircuitSolver::settle_vapour() {
-  const double p_cav = fluid_.cavitation_pressure();
-  const double beta_cav = fluid_.bulk_modulus(p_cav);
+  const double p_cav = cavitation_pressure_;
+  const double beta_cav = cavitation_beta_;
   for (int i = 0; i < np_; ++i) {
     const auto iu = static_cast<std::size_t>(i);
     double& p = state_.pressure[iu];
@@ -370,17 +377,21 @@ void CircuitSolver::settle_vapour() {
 // any state's estimate exceeds its tolerance.
 bool CircuitSolver::error_too_large(double h) const {
   const auto np = static_cast<std::size_t>(np_), nv = static_cast<std::size_t>(nv_);
+  const double* const k1 = k1_.data();
+  const double* const k2 = k2_.data();
+  const double* const pressure = state_.pressure.data();
+  const double* const velocity = state_.velocity.data();
+  const double half_h = 0.5 * h;
+  bool too_large = false;  // (no early exit: almost every step is accepted)
   for (std::size_t i = 0; i < np; ++i) {
-    if (cavitating_[i]) continue;
-    const double tolerance = kPressureTolerance + kRelativeTolerance * std::abs(state_.pressure[i]);
-    if (std::abs(0.5 * h * (k1_[i] + k2_[i])) > tolerance) return true;
+    const double tolerance = kPressureTolerance + kRelativeTolerance * std::abs(pressure[i]);
+    too_large |= !cavitating_[i] && std::abs(half_h * (k1[i] + k2[i])) > tolerance;
   }
   for (std::size_t b = 0; b < nv; ++b) {
-    if (held_[b]) continue;
-    const double tolerance = kSpeedTolerance + kRelativeTolerance * std::abs(state_.velocity[b]);
-    if (std::abs(0.5 * h * (k1_[np + b] + k2_[np + b])) > tolerance) return true;
+    const double tolerance = kSpeedTolerance + kRelativeTolerance * std::abs(velocity[b]);
+    too_large |= !held_[b] && std::abs(half_h * (k1[np + b] + k2[np + b])) > tolerance;
   }
-  return false;
+  return too_large;
 }
 
 double CircuitSolver::compression_energy(double volume, double p0, double p1) const {

@@ -82,8 +82,12 @@ class CircuitSolver {
   std::vector<double> fixed_volume_;    // per node: the part that does not follow body positions, m^3
   bool air_free_ = false;               // the fluid's bulk modulus is a constant, beta_liquid_
   double beta_liquid_ = 0.0;
+  double cavitation_pressure_ = 0.0;    // the fluid's, and its bulk modulus there (from refresh())
+  double cavitation_beta_ = 0.0;
   std::vector<double> vapour_;          // per pressure state: vapour volume of a cavitating node, m^3
-  std::vector<char> cavitating_;        // per pressure state, this step
+  // Flags as uint16_t, not char: a store through a char type may alias anything, and would make
+  // the compiler reload every vector's data pointer in the loops that set them.
+  std::vector<std::uint16_t> cavitating_;  // per pressure state, this step
   std::vector<double> start_pressure_;  // pressures at the start of the step
   std::vector<double> mass_;    // per body
   std::vector<double> inverse_mass_;
@@ -91,7 +95,7 @@ class CircuitSolver {
   std::vector<double> friction_;        // dry friction force used in the solve, per body
   std::vector<double> friction_limit_;  // force limit handed to ODE, per body
   std::vector<double> ode_force_;
-  std::vector<char> held_;
+  std::vector<std::uint16_t> held_;
   std::array<double, kEnergyKinds> power_{};  // scratch for Residual/Jacobian modes
   std::array<double, kEnergyKinds> power_start_{}, power_end_{};
 
@@ -99,7 +103,7 @@ class CircuitSolver {
   // plain loops over row-major storage, W assembled straight into the LU's storage.
   std::vector<double> r_, r0_, f_, k1_, k2_, y_, scale_;
   std::vector<double> g_;  // n x n row-major: d(residual)/d(state) of the last Jacobian evaluation
-  std::vector<char> pattern_;  // n x n: the entries of g (and so of W) any stamp has written so far
+  std::vector<std::uint16_t> pattern_;  // n x n: the entries of g (and so of W) any stamp has written so far
   bool pattern_grew_ = false;
   SmallLu lu_;             // holds W = I - gamma h J, then its factors
 

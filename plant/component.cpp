@@ -28,6 +28,4 @@ Status Component::set_parameter(std::string_view parameter, double value) {
   return Status::success();
 }
 
-double sanitize_input(double value) { return std::isfinite(value) ? value : 0.0; }
-
 }  // namespace plant

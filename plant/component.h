@@ -4,6 +4,7 @@
 // the plant resolves to pressure nodes and rigid bodies; it never knows who is connected.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <span>
 #include <string>
@@ -102,6 +103,6 @@ std::unique_ptr<Component> make_component(std::string name, std::vector<double> 
 
 /// Reads a current, command or other device-written input: non-finite values count as 0, since a
 /// device that writes NaN must not poison the physics.
-double sanitize_input(double value);
+inline double sanitize_input(double value) { return std::isfinite(value) ? value : 0.0; }
 
 }  // namespace plant

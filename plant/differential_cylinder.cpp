@@ -104,7 +104,8 @@ void DifferentialCylinder::stamp(Equations& eq) const {
   if (eq.wants_jacobian()) {  // dry friction is recorded once per step, at its start
     const double fc = parameter(kCoulombFriction), fs = parameter(kStaticFriction);
     const double s = v / parameter(kStribeckVelocity);
-    eq.dry_friction(rod_, fs, fc + (fs - fc) * std::exp(-s * s));
+    // (at rest, exp(-0) = 1 without the call: a resting rod is common)
+    eq.dry_friction(rod_, fs, fc + (fs - fc) * (s == 0.0 ? 1.0 : std::exp(-s * s)));
   }
 }
 

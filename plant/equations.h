@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "plant/circuit_state.h"
@@ -29,7 +30,7 @@ class Equations {
 
   /// Jacobian mode needs this: each entry of the Jacobian a stamp writes is marked in `pattern`
   /// (row-major, like the Jacobian), and `grew` set when one was not marked before.
-  void record_pattern(std::vector<char>& pattern, bool& grew) {
+  void record_pattern(std::vector<std::uint16_t>& pattern, bool& grew) {
     pattern_ = pattern.data();
     grew_ = &grew;
   }
@@ -53,11 +54,11 @@ class Equations {
     if (ts) r_[to.index] += q;
     if (mode_ == Mode::Jacobian) {
       if (fs) {
-        g(from.index, from.index) -= dq_ddp;
+        diagonal(from.index) -= dq_ddp;
         if (ts) g(from.index, to.index) += dq_ddp;
       }
       if (ts) {
-        g(to.index, to.index) -= dq_ddp;
+        diagonal(to.index) -= dq_ddp;
         if (fs) g(to.index, from.index) += dq_ddp;
       }
     }
@@ -88,7 +89,7 @@ class Equations {
     }
     const int row = dof_row(dof);
     r_[row] += f;
-    if (mode_ == Mode::Jacobian) g(row, row) += df_dv;
+    if (mode_ == Mode::Jacobian) diagonal(row) += df_dv;
   }
 
   /// Dry (Coulomb/Stribeck) friction on a body: the levels it can hold at rest and while sliding.
@@ -108,14 +109,16 @@ class Equations {
   Mode mode_;
   double& g(int row, int column) {
     const std::size_t i = static_cast<std::size_t>(row) * n_ + static_cast<std::size_t>(column);
-    if (pattern_[i] == 0) [[unlikely]]
-      mark(i);
+    // Marked in place (no call, and not through a char type, which may alias anything): the
+    // compiler keeps the stamps' other values in registers across it.
+    if (pattern_[i] == 0) [[unlikely]] {
+      pattern_[i] = 1;
+      *grew_ = true;
+    }
     return g_[i];
   }
-  [[gnu::noinline]] void mark(std::size_t i) {
-    pattern_[i] = 1;
-    *grew_ = true;
-  }
+  // The diagonal is in the pattern from the start (the solver marks it), so needs no check.
+  double& diagonal(int row) { return g_[static_cast<std::size_t>(row) * (n_ + 1)]; }
 
   double* r_;
   double* g_;
@@ -123,7 +126,7 @@ class Equations {
   std::vector<double>& dry_static_;
   std::vector<double>& dry_kinetic_;
   std::array<double, kEnergyKinds>& power_;
-  char* pattern_ = nullptr;
+  std::uint16_t* pattern_ = nullptr;
   bool* grew_ = nullptr;
 };
 

@@ -43,7 +43,12 @@ void PressureSensor::publish(const CircuitState& state, double dt) {
     started_ = true;
     return;
   }
-  out(kPressure) += (1.0 - std::exp(-dt / tau)) * (p - out(kPressure));
+  if (dt != gain_dt_ || tau != gain_tau_) {
+    gain_ = 1.0 - std::exp(-dt / tau);
+    gain_dt_ = dt;
+    gain_tau_ = tau;
+  }
+  out(kPressure) += gain_ * (p - out(kPressure));
 }
 
 }  // namespace plant

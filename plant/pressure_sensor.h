@@ -18,6 +18,9 @@ class PressureSensor final : public Component {
 
  private:
   bool started_ = false;
+  // The lag's gain 1 - exp(-dt/tau) per tick, for the tick length and time constant it was
+  // computed for (both rarely change).
+  double gain_dt_ = -1.0, gain_tau_ = -1.0, gain_ = 0.0;
 };
 
 }  // namespace plant

@@ -80,6 +80,7 @@ double ProportionalValve::commanded_position(double current_a, double current_b)
 
 double ProportionalValve::opening(double s) const {
   const double overlap = parameter(kOverlap);
+  if (s < overlap) return 0.0;  // closed (what the clamp below gives), without the division
   return std::clamp((s - overlap) / (1.0 - overlap), 0.0, 1.0);
 }
 
@@ -105,12 +106,11 @@ void ProportionalValve::advance(double /*h*/) {
 }
 
 // Inlined into stamp(): four edges per call, two calls per step.
-[[gnu::always_inline]] inline void ProportionalValve::stamp_edge(Equations& eq, int from, int to, double open) const {
-  const NodeId a = node(from), b = node(to);
-  const double dp = eq.pressure(a) - eq.pressure(b);
-  const double c = parameter(kLeakageCoefficient);
+[[gnu::always_inline]] inline void ProportionalValve::stamp_edge(Equations& eq, NodeId a, NodeId b, double dp,
+                                                                 double open, const EdgeLaw& law) {
+  const double c = law.leakage;
   if (open > 0.0) {
-    const auto f = orifice_flow(kv_ * open, dp, parameter(kTransitionPressure));
+    const auto f = orifice_flow(law.kv * open, dp, law.transition);
     if (eq.mode() != Equations::Mode::Power) {
       // One stamp for both flows of the edge (the energy balance needs them apart).
       eq.flow(a, b, f.q + c * dp, f.dq_ddp + c, EnergyKind::Throttling);
@@ -122,10 +122,14 @@ void ProportionalValve::advance(double /*h*/) {
 }
 
 void ProportionalValve::stamp(Equations& eq) const {
-  stamp_edge(eq, kP, kA, open_forward_);
-  stamp_edge(eq, kB, kT, open_forward_);
-  stamp_edge(eq, kP, kB, open_reverse_);
-  stamp_edge(eq, kA, kT, open_reverse_);
+  const NodeId p = node(kP), t = node(kT), a = node(kA), b = node(kB);
+  const double pp = eq.pressure(p), pt = eq.pressure(t), pa = eq.pressure(a), pb = eq.pressure(b);
+  const double forward = open_forward_, reverse = open_reverse_;
+  const EdgeLaw law{kv_, parameter(kLeakageCoefficient), parameter(kTransitionPressure)};
+  stamp_edge(eq, p, a, pp - pa, forward, law);
+  stamp_edge(eq, b, t, pb - pt, forward, law);
+  stamp_edge(eq, p, b, pp - pb, reverse, law);
+  stamp_edge(eq, a, t, pa - pt, reverse, law);
 }
 
 [[gnu::always_inline]] inline double ProportionalValve::edge_flow(const CircuitState& state, int from, int to,

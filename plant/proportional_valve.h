@@ -51,7 +51,12 @@ class ProportionalValve final : public Component {
   double commanded_position(double current_a, double current_b) const;
   /// Metering opening (0..1) of an edge for spool position s (s = x for P->A/B->T, -x otherwise).
   double opening(double s) const;
-  void stamp_edge(Equations& eq, int from, int to, double open) const;
+  /// The values an edge's stamp needs, read once per stamp() before anything is stamped (the
+  /// stamps store doubles, so the compiler would otherwise reload every one of them per edge).
+  struct EdgeLaw {
+    double kv, leakage, transition;
+  };
+  static void stamp_edge(Equations& eq, NodeId from, NodeId to, double dp, double open, const EdgeLaw& law);
   double edge_flow(const CircuitState& state, int from, int to, double open) const;
 
   SecondOrderLag spool_;

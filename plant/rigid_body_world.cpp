@@ -283,7 +283,7 @@ void RigidBodyWorld::step(double h, std::span<const double> force, std::span<con
         x = stop;
       }
       d.joint_position = x;
-      d.position = std::fmin(std::fmax(x, d.lower), d.upper);
+      d.position = x < d.lower ? d.lower : x > d.upper ? d.upper : x;  // (fmin/fmax are library calls)
     } else {
       double turn;  // the step's rotation about the axis, trapezoidal as for sliders
       if (d.closed_form) {

@@ -33,11 +33,9 @@ class SmallLu {
         lu_(n_ * n_, 0.0),
         position_(n_, 0),
         order_(n_, 0),
-        eliminations_(n_ * n_),
-        elimination_end_(n_, 0),
-        inverse_pivot_(n_, 0.0),
-        updates_(n_ * n_ * n_ / 3 + n_),
-        substitutions_(2 * n_ * n_ + n_),
+        permuted_(n_, 0.0),
+        positions_(n_),
+        columns_(n_ * n_),
         row_start_(n_ + 1, 0),
         row_slots_(n_ * n_),
         adjacent_(n_ * n_, 0),
@@ -66,7 +64,8 @@ class SmallLu {
   /// The entries of W that can be nonzero (row-major, n x n; nonzero = may be nonzero): chooses
   /// the elimination order and the factors' pattern, and lays out factor() and solve() as runs
   /// over it. Entries outside it must be zero in every W assembled afterwards. Does not allocate.
-  void set_pattern(const std::vector<char>& pattern) {
+  template <typename Flag>
+  void set_pattern(const std::vector<Flag>& pattern) {
     const std::size_t n = n_;
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; j < n; ++j)
@@ -95,30 +94,20 @@ class SmallLu {
     }
     // adjacent_ is now the factors' (symmetric) pattern. For position k, the later positions m
     // coupled to it are both the rows below the pivot with an entry in column k (L) and the
-    // columns right of it in row k (U).
-    auto later = [&](std::size_t k, std::size_t m) { return m > k && adjacent_[order_[k] * n + order_[m]] != 0; };
-    std::size_t elimination = 0, update = 0, substitution = 0;
+    // columns right of it in row k (U); the earlier ones are the columns of L in row k.
+    auto coupled = [&](std::size_t k, std::size_t m) { return adjacent_[order_[k] * n + order_[m]] != 0; };
+    std::size_t next_column = 0;
     for (std::size_t k = 0; k < n; ++k) {
-      for (std::size_t m = k + 1; m < n; ++m) {
-        if (!later(k, m)) continue;
-        const std::size_t first = update;
-        for (std::size_t j = k + 1; j < n; ++j)
-          if (later(k, j)) updates_[update++] = {index(m * n + j), index(k * n + j)};
-        eliminations_[elimination++] = {index(m * n + k), first, update};
-      }
-      elimination_end_[k] = elimination;
-    }
-    // Forward substitution (L, unit diagonal) in the solver's numbering: x[m] -= L(m,k) x[k].
-    for (std::size_t k = 0; k < n; ++k)
+      Position& position = positions_[k];
+      position.unknown = index(order_[k]);
+      position.earlier_begin = index(next_column);
+      for (std::size_t m = 0; m < k; ++m)
+        if (coupled(k, m)) columns_[next_column++] = index(m);
+      position.later_begin = index(next_column);
       for (std::size_t m = k + 1; m < n; ++m)
-        if (later(k, m)) substitutions_[substitution++] = {index(order_[m]), index(order_[k]), index(m * n + k), false};
-    // Backward substitution (U): x[k] -= U(k,m) x[m] for the later m, then x[k] /= U(k,k).
-    for (std::size_t k = n; k-- > 0;) {
-      for (std::size_t m = k + 1; m < n; ++m)
-        if (later(k, m)) substitutions_[substitution++] = {index(order_[k]), index(order_[m]), index(k * n + m), false};
-      substitutions_[substitution++] = {index(order_[k]), index(k), 0, true};
+        if (coupled(k, m)) columns_[next_column++] = index(m);
+      position.later_end = index(next_column);
     }
-    substitutions_end_ = substitution;
     std::size_t next = 0;
     for (std::size_t r = 0; r < n; ++r) {
       row_start_[r] = next;
@@ -131,60 +120,73 @@ class SmallLu {
   void factor() {
     const std::size_t n = n_;
     double* const lu = lu_.data();
-    const Update* const updates = updates_.data();
-    const Elimination* e = eliminations_.data();
+    const std::uint32_t* const columns = columns_.data();
     for (std::size_t k = 0; k < n; ++k) {
+      Position& position = positions_[k];
       const double inverse = 1.0 / lu[k * (n + 1)];
-      inverse_pivot_[k] = inverse;
-      for (const Elimination* last = eliminations_.data() + elimination_end_[k]; e != last; ++e) {
-        double& entry = lu[e->below];
+      position.inverse_pivot = inverse;
+      // Rows below the pivot with an entry in column k are the columns right of it in row k
+      // (the pattern is symmetric): each such row m gets l = W(m,k)/W(k,k) times row k.
+      const std::uint32_t* const first = columns + position.later_begin;
+      const std::uint32_t* const last = columns + position.later_end;
+      const double* const pivot_row = lu + k * n;
+      for (const std::uint32_t* m = first; m != last; ++m) {
+        double* const row = lu + *m * n;
+        double& entry = row[k];
         if (entry == 0.0) continue;  // e.g. a pinned row
         const double l = entry * inverse;
         entry = l;
-        for (std::size_t u = e->updates_begin; u < e->updates_end; ++u) lu[updates[u].target] -= l * lu[updates[u].source];
+        for (const std::uint32_t* j = first; j != last; ++j) row[*j] -= l * pivot_row[*j];
       }
     }
   }
 
-  /// x = W^-1 b for the W of the last factor(), both in the solver's numbering; x and b may not
-  /// alias.
-  void solve(const double* b, double* x) const {
-    const double* const lu = lu_.data();
-    std::copy(b, b + n_, x);
-    for (const Substitution* s = substitutions_.data(); s != substitutions_.data() + substitutions_end_; ++s) {
-      if (s->divide) {
-        x[s->target] *= inverse_pivot_[s->source];
-      } else {
-        x[s->target] -= lu[s->flat] * x[s->source];
-      }
+  /// x = W^-1 b for the W of the last factor(), both in the solver's numbering.
+  void solve(const double* b, double* x) {
+    const std::size_t n = n_;
+    double* const y = permuted_.data();  // the unknowns in elimination order
+    const std::uint32_t* const columns = columns_.data();
+    const Position* const first = positions_.data();
+    const Position* const last = first + n;
+    // Forward (L, unit diagonal), row by row: y[m] = b[m] - sum over k < m of L(m,k) y[k].
+    const double* row = lu_.data();
+    double* ym = y;
+    for (const Position* p = first; p != last; ++p, row += n, ++ym) {
+      double sum = b[p->unknown];
+      for (const std::uint32_t* k = columns + p->earlier_begin; k != columns + p->later_begin; ++k) sum -= row[*k] * y[*k];
+      *ym = sum;
+    }
+    // Backward (U): y[k] = (y[k] - sum over m > k of U(k,m) y[m]) / U(k,k).
+    for (const Position* p = last; p != first;) {
+      --p;
+      row -= n;
+      --ym;
+      double sum = *ym;
+      for (const std::uint32_t* m = columns + p->later_begin; m != columns + p->later_end; ++m) sum -= row[*m] * y[*m];
+      sum *= p->inverse_pivot;
+      *ym = sum;
+      x[p->unknown] = sum;
     }
   }
 
  private:
   static std::uint32_t index(std::size_t i) { return static_cast<std::uint32_t>(i); }
-  // One column entry of L: lu[below] /= the pivot, then that row's updates.
-  struct Elimination {
-    std::uint32_t below;
-    std::size_t updates_begin, updates_end;
-  };
-  struct Update {
-    std::uint32_t target, source;  // lu[target] -= l * lu[source]
-  };
-  struct Substitution {
-    std::uint32_t target, source, flat;  // x[target] -= lu[flat] * x[source], or x[target] /= pivot `source`
-    bool divide;
-  };
 
   std::size_t n_;
   std::vector<double> lu_;             // row-major, elimination order: U on and above the diagonal, L below
   std::vector<std::size_t> position_;  // solver's unknown -> elimination position
   std::vector<std::size_t> order_;     // elimination position -> solver's unknown
-  std::vector<Elimination> eliminations_;
-  std::vector<std::size_t> elimination_end_;  // per position k: the end of its column's eliminations
-  std::vector<double> inverse_pivot_;         // per position, from the last factor()
-  std::vector<Update> updates_;
-  std::vector<Substitution> substitutions_;
-  std::size_t substitutions_end_ = 0;
+  std::vector<double> permuted_;       // solve()'s scratch
+  // Per elimination position k: its unknown, the positions coupled to it in the factors (those
+  // before it: columns_[earlier_begin, later_begin), the columns of L in row k; those after it,
+  // ascending: columns_[later_begin, later_end), the columns of U in row k and the rows of L in
+  // column k), and 1/pivot from the last factor().
+  struct Position {
+    std::uint32_t unknown, earlier_begin, later_begin, later_end;
+    double inverse_pivot;
+  };
+  std::vector<Position> positions_;
+  std::vector<std::uint32_t> columns_;
   std::vector<std::size_t> row_start_;  // per unknown (solver's numbering): its range of row_slots_
   std::vector<Slot> row_slots_;
   std::vector<char> adjacent_, eliminated_;  // set_pattern()'s scratch

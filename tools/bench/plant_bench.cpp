@@ -48,16 +48,26 @@ Figures run(double max_step, double seconds) {
   double* mot_a = p.port("valve_motor.solenoid_a_current");
   const sim::Duration tick = sim::milliseconds(1);
   const auto ticks = static_cast<long>(seconds * 1000.0);
+  // The valve currents, computed before the clock starts (two sin() per tick would be a tenth of
+  // the plant's own time); the pump's loop closes on the plant's output, so it stays in the loop.
+  struct Currents {
+    double cyl_a, cyl_b, mot_a;
+  };
+  std::vector<Currents> currents(static_cast<std::size_t>(ticks));
+  for (long k = 0; k < ticks; ++k) {
+    const double t = static_cast<double>(k) * 1e-3;
+    const double s = std::sin(2.0 * M_PI * 0.25 * t);  // cylinder: 4 s period, full strokes
+    currents[static_cast<std::size_t>(k)] = {s > 0 ? 0.128 + 0.5 * s : 0.0, s < 0 ? 0.128 - 0.5 * s : 0.0,
+                                             0.6 + 0.3 * std::sin(2.0 * M_PI * 0.2 * t)};
+  }
   sim::Time now{};
   const auto wall0 = std::chrono::steady_clock::now();
   const double cpu0 = cpu_seconds();
-  for (long k = 0; k < ticks; ++k) {
-    const double t = static_cast<double>(k) * 1e-3;
+  for (const Currents& c : currents) {
     *pilot = 4.0 * (0.6 - *alpha);  // the pump controller's swivel-angle loop, at 60 %
-    const double s = std::sin(2.0 * M_PI * 0.25 * t);  // cylinder: 4 s period, full strokes
-    *cyl_a = s > 0 ? 0.128 + 0.5 * s : 0.0;
-    *cyl_b = s < 0 ? 0.128 - 0.5 * s : 0.0;
-    *mot_a = 0.6 + 0.3 * std::sin(2.0 * M_PI * 0.2 * t);
+    *cyl_a = c.cyl_a;
+    *cyl_b = c.cyl_b;
+    *mot_a = c.mot_a;
     p.step(now, tick);
     now += tick;
   }
