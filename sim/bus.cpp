@@ -330,13 +330,16 @@ void Bus::complete(Time at) {
     }
     if (transport_ && f.from != kWire) transport_->send(f.frame);
     transmit_success(f.from, at);
-    receive_result(f.from, false, at);
+    // A success changes nothing while every REC is 0 (the state follows the counters).
+    if (rec_nonzero_count_ != 0) receive_result(f.from, false, at);
   }
   if (f.from != kWire && sender->counters.state == ErrorState::Passive) {
     sender->suspend_until_ns = f.end_ns + static_cast<std::int64_t>(kSuspendTransmissionBits) * bit_ns();
     if (!sender->tx.empty()) refresh_head(*sender);
   }
-  recessive_sequences(1, at);  // ACK delimiter + EOF + intermission, or error delimiter + intermission
+  // ACK delimiter + EOF + intermission, or error delimiter + intermission (only bus-off
+  // endpoints count them).
+  if (bus_off_count_ > 0) recessive_sequences(1, at);
   if (f.error) return;
   deliver_to_receivers(f.frame, f.from, at);
 }
