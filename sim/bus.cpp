@@ -41,19 +41,22 @@ void Bus::set_timing(BusTiming timing, std::uint32_t bit_rate) {
   timing_ = timing;
   timing_rate_ = bit_rate == 0 ? 500000 : bit_rate;
   bit_ns_ = 1000000000LL / timing_rate_;
+  unsettle();
 }
 
 int Bus::attach(FrameReceiver* receiver) {
+  unsettle();
   endpoints_.emplace_back();
   endpoints_.back().receiver = receiver;
   tx_pending_.resize((endpoints_.size() + 63) / 64);
-  receivers_.resize(tx_pending_.size());
+  rx_list_.reserve(endpoints_.size());
   refresh_receiver(static_cast<int>(endpoints_.size()) - 1);
   return static_cast<int>(endpoints_.size()) - 1;
 }
 
 void Bus::set_online(int endpoint, bool online) {
   if (endpoint < 0 || endpoint >= static_cast<int>(endpoints_.size())) return;
+  unsettle();
   auto& ep = endpoints_[static_cast<std::size_t>(endpoint)];
   ep.online = online;
   if (!online) tx_clear(endpoint);  // the controller is off: what it had queued is gone
@@ -75,6 +78,7 @@ const ErrorCounters& Bus::counters(int endpoint) const {
 }
 
 void Bus::send(int from_endpoint, const CanFrame& frame, Time now) {
+  unsettle();
   if (from_endpoint != kWire && !participates(from_endpoint)) return;
   Pending p{frame, from_endpoint};
   if (filter_) {
@@ -101,11 +105,18 @@ void Bus::send(int from_endpoint, const CanFrame& frame, Time now) {
   tx_push(from_endpoint, Queued{p.frame, ns_of(now)});
 }
 
+void Bus::refresh_head(Endpoint& ep) {
+  const Queued& head = ep.tx.front();
+  ep.head_ready_ns = std::max(head.ready_ns, ep.suspend_until_ns);
+  ep.head_key = arbitration_key(head.frame);
+}
+
 void Bus::tx_push(int from, const Queued& q) {
   Endpoint* ep = endpoint_of(from);
   const bool was_empty = ep->tx.empty();
   ep->tx.push(q);
   if (!was_empty) return;  // the queue's head, and so the earliest ready head, is unchanged
+  refresh_head(*ep);
   if (from != kWire) tx_pending_[static_cast<std::size_t>(from) >> 6] |= 1ull << (from & 63);
   ready_floor_ns_ = std::min(ready_floor_ns_, q.ready_ns);
 }
@@ -114,6 +125,7 @@ void Bus::tx_pop(int from) {
   Endpoint* ep = endpoint_of(from);
   ep->tx.pop();
   if (!ep->tx.empty()) {
+    refresh_head(*ep);
     ready_floor_ns_ = std::min(ready_floor_ns_, ep->tx.front().ready_ns);
   } else if (from != kWire) {
     tx_pending_[static_cast<std::size_t>(from) >> 6] &= ~(1ull << (from & 63));
@@ -127,13 +139,14 @@ void Bus::tx_clear(int index) {
 }
 
 void Bus::refresh_receiver(int index) {
-  const std::uint64_t bit = 1ull << (index & 63);
-  auto& word = receivers_[static_cast<std::size_t>(index) >> 6];
-  if (participates(index) && endpoints_[static_cast<std::size_t>(index)].receiver != nullptr) {
-    word |= bit;
-  } else {
-    word &= ~bit;
-  }
+  auto& ep = endpoints_[static_cast<std::size_t>(index)];
+  const bool receives = participates(index) && ep.receiver != nullptr;
+  if (receives == ep.receives) return;
+  ep.receives = receives;
+  rx_list_.clear();
+  for (std::size_t i = 0; i < endpoints_.size(); ++i)
+    if (endpoints_[i].receives) rx_list_.push_back(Rx{endpoints_[i].receiver, static_cast<int>(i)});
+  ++rx_version_;
 }
 
 void Bus::release_delayed(Time now) {
@@ -157,6 +170,7 @@ void Bus::release_delayed(Time now) {
 }
 
 std::size_t Bus::deliver_due(Time now) {
+  unsettle();
   const std::int64_t now_ns = ns_of(now);
   now_ns_ = std::max(now_ns_, now_ns);
   if (!delayed_.empty()) release_delayed(now);
@@ -207,11 +221,7 @@ void Bus::deliver_one(const Pending& p, Time now) {
   transmit_success(p.from, now);
   receive_result(p.from, false, now);
   recessive_sequences(1, now);
-  for (std::size_t i = 0; i < endpoints_.size(); ++i) {
-    const auto& ep = endpoints_[i];
-    if (static_cast<int>(i) == p.from || !participates(static_cast<int>(i)) || ep.receiver == nullptr) continue;
-    ep.receiver->on_frame(p.frame, now);
-  }
+  deliver_to_receivers(p.frame, p.from, now);
 }
 
 // ---- bit timing ---------------------------------------------------------------------------------
@@ -233,41 +243,39 @@ void Bus::deliver_timed(Time now, std::size_t& n) {
 bool Bus::start_next(std::int64_t now_ns) {
   // Nothing can start before now: the common case between frames, decided without the queues.
   if (std::max(idle_ns_, ready_floor_ns_) >= now_ns) return false;
-  auto ready_of = [](const Endpoint& ep) { return std::max(ep.tx.front().ready_ns, ep.suspend_until_ns); };
+  // The next frame starts at start = max(idle, earliest ready head); the heads ready by then
+  // arbitrate (lowest key wins; on equal keys the lower endpoint, the wire last). In one pass:
+  // the least (max(ready, idle), key), first found on ties.
   std::int64_t earliest = std::numeric_limits<std::int64_t>::max();
-  if (!wire_.tx.empty()) earliest = ready_of(wire_);
-  for (std::size_t w = 0; w < tx_pending_.size(); ++w) {
-    for (std::uint64_t bits = tx_pending_[w]; bits != 0; bits &= bits - 1) {
-      const int i = static_cast<int>(w * 64) + std::countr_zero(bits);
-      if (!participates(i)) continue;
-      earliest = std::min(earliest, ready_of(endpoints_[static_cast<std::size_t>(i)]));
-    }
-  }
-  ready_floor_ns_ = earliest;
-  if (earliest == std::numeric_limits<std::int64_t>::max()) return false;
-  const std::int64_t start = std::max(idle_ns_, earliest);
-  // Everything sent at `start` must be known before it is decided: only instants before now.
-  if (start >= now_ns) return false;
-  // On equal keys the lower endpoint wins (endpoints in increasing order); the wire last.
-  int winner = kWire - 1;
+  std::int64_t start = earliest;
   std::uint64_t best = 0;
+  int winner = kWire - 1;
   for (std::size_t w = 0; w < tx_pending_.size(); ++w) {
     for (std::uint64_t bits = tx_pending_[w]; bits != 0; bits &= bits - 1) {
       const int i = static_cast<int>(w * 64) + std::countr_zero(bits);
       if (!participates(i)) continue;
       const Endpoint& ep = endpoints_[static_cast<std::size_t>(i)];
-      if (ready_of(ep) > start) continue;
-      const std::uint64_t key = arbitration_key(ep.tx.front().frame);
-      if (winner == kWire - 1 || key < best) {
+      earliest = std::min(earliest, ep.head_ready_ns);
+      const std::int64_t at = std::max(ep.head_ready_ns, idle_ns_);
+      if (at < start || (at == start && ep.head_key < best)) {
         winner = i;
-        best = key;
+        start = at;
+        best = ep.head_key;
       }
     }
   }
-  if (!wire_.tx.empty() && ready_of(wire_) <= start) {
-    const std::uint64_t key = arbitration_key(wire_.tx.front().frame);
-    if (winner == kWire - 1 || key < best) winner = kWire;
+  if (!wire_.tx.empty()) {
+    earliest = std::min(earliest, wire_.head_ready_ns);
+    const std::int64_t at = std::max(wire_.head_ready_ns, idle_ns_);
+    if (at < start || (at == start && wire_.head_key < best)) {
+      winner = kWire;
+      start = at;
+    }
   }
+  ready_floor_ns_ = earliest;
+  if (winner == kWire - 1) return false;
+  // Everything sent at `start` must be known before it is decided: only instants before now.
+  if (start >= now_ns) return false;
   const Time start_time = time_of(start);
   idle_until(start, start_time);
   // The SOF ends every recessive sequence (only bus-off endpoints count them).
@@ -276,12 +284,12 @@ bool Bus::start_next(std::int64_t now_ns) {
 
   const CanFrame& frame = endpoint_of(winner)->tx.front().frame;
   const FrameBits bits = bits_cache_.get(frame);
-  InFlight f;
-  f.active = true;
-  f.head = true;
+  // Built in place: in_flight_ is inactive, nothing reads it until this returns.
+  InFlight& f = in_flight_;
   f.from = winner;
   f.frame = frame;
   f.start_ns = start;
+  f.head = true;
   f.error = filter_ && winner != kWire && filter_->on_transmit(frame, winner, start_time);
   if (f.error) {
     // Receivers find the CRC error at the CRC delimiter; the error flag starts after the ACK
@@ -293,7 +301,7 @@ bool Bus::start_next(std::int64_t now_ns) {
     f.deliver_ns = start + static_cast<std::int64_t>(bits.until_eof()) * bit_ns();
   }
   f.end_ns = start + static_cast<std::int64_t>(f.bits) * bit_ns();
-  in_flight_ = f;
+  f.active = true;
   // Counted when it starts: the load window then sees the bus busy while the frame is on it.
   account(f.error ? nullptr : &f.frame, f.bits, f.start_ns);
   return true;
@@ -322,25 +330,34 @@ void Bus::complete(Time at) {
     }
     if (transport_ && f.from != kWire) transport_->send(f.frame);
     transmit_success(f.from, at);
-    receive_result(f.from, false, at);
+    // A success changes nothing while every REC is 0 (the state follows the counters).
+    if (rec_nonzero_count_ != 0) receive_result(f.from, false, at);
   }
-  if (f.from != kWire && sender->counters.state == ErrorState::Passive)
+  if (f.from != kWire && sender->counters.state == ErrorState::Passive) {
     sender->suspend_until_ns = f.end_ns + static_cast<std::int64_t>(kSuspendTransmissionBits) * bit_ns();
-  recessive_sequences(1, at);  // ACK delimiter + EOF + intermission, or error delimiter + intermission
+    if (!sender->tx.empty()) refresh_head(*sender);
+  }
+  // ACK delimiter + EOF + intermission, or error delimiter + intermission (only bus-off
+  // endpoints count them).
+  if (bus_off_count_ > 0) recessive_sequences(1, at);
   if (f.error) return;
-  // Every endpoint that takes frames, in order; the mask is read as the loop goes, since a
-  // receiver may take another endpoint off the bus.
-  for (std::size_t i = 0;;) {
-    const std::size_t w = i >> 6;
-    if (w >= receivers_.size()) break;
-    const std::uint64_t bits = receivers_[w] & (~0ull << (i & 63));
-    if (bits == 0) {
-      i = (w + 1) << 6;
-      continue;
+  deliver_to_receivers(f.frame, f.from, at);
+}
+
+void Bus::deliver_to_receivers(const CanFrame& frame, int from, Time at) {
+  // Every endpoint that takes frames, in order. A receiver may take another endpoint off the bus
+  // (or attach one): then the rest goes by the endpoints' flags, read as the loop goes.
+  const std::uint64_t version = rx_version_;
+  for (std::size_t k = 0; k < rx_list_.size(); ++k) {
+    const Rx rx = rx_list_[k];
+    if (rx.index == from) continue;
+    rx.receiver->on_frame(frame, at);
+    if (rx_version_ == version) continue;
+    for (auto i = static_cast<std::size_t>(rx.index) + 1; i < endpoints_.size(); ++i) {
+      const Endpoint& ep = endpoints_[i];
+      if (ep.receives && static_cast<int>(i) != from) ep.receiver->on_frame(frame, at);
     }
-    i = (w << 6) + static_cast<std::size_t>(std::countr_zero(bits));
-    if (static_cast<int>(i) != f.from) endpoints_[i].receiver->on_frame(f.frame, at);
-    ++i;
+    return;
   }
 }
 
@@ -452,16 +469,23 @@ void Bus::account(const CanFrame* frame, unsigned bits, std::int64_t start_ns) {
   const std::int64_t duration = static_cast<std::int64_t>(bits) * bit_ns();
   busy_ns_ += static_cast<std::uint64_t>(duration);
   if (timing_ == BusTiming::Ideal) idle_ns_ = std::max(idle_ns_, start_ns + duration);
-  // Split the occupancy over the millisecond buckets it covers.
-  std::int64_t t = start_ns;
   const std::int64_t end = start_ns + duration;
-  while (t < end) {
-    const std::int64_t ms = t / 1000000;
-    const std::int64_t bucket_end = std::min(end, (ms + 1) * 1000000);
-    auto& b = load_[static_cast<std::size_t>(ms % kLoadBuckets)];
-    if (b.ms != ms) b = LoadBucket{ms, 0};
-    b.busy_ns += bucket_end - t;
-    t = bucket_end;
+  if (start_ns >= load_lo_ns_ && end <= load_lo_ns_ + 1000000) {
+    // Within the bucket the last frame ended in (most frames): no division.
+    load_[load_index_].busy_ns += duration;
+  } else {
+    // Split the occupancy over the millisecond buckets it covers.
+    std::int64_t t = start_ns;
+    while (t < end) {
+      const std::int64_t ms = t / 1000000;
+      const std::int64_t bucket_end = std::min(end, (ms + 1) * 1000000);
+      load_index_ = static_cast<std::size_t>(ms % kLoadBuckets);
+      load_lo_ns_ = ms * 1000000;
+      auto& b = load_[load_index_];
+      if (b.ms != ms) b = LoadBucket{ms, 0};
+      b.busy_ns += bucket_end - t;
+      t = bucket_end;
+    }
   }
   if (!frame) return;
   IdTraffic* entry = nullptr;

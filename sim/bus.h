@@ -115,7 +115,10 @@ class Bus {
   std::uint32_t timing_bit_rate() const { return timing_rate_; }
   /// Depth of each endpoint's transmit queue (Bit timing); a frame sent to a full queue is
   /// dropped and counted. Default kDefaultTxQueue.
-  void set_tx_queue_depth(std::size_t depth) { tx_depth_ = depth == 0 ? 1 : depth; }
+  void set_tx_queue_depth(std::size_t depth) {
+    tx_depth_ = depth == 0 ? 1 : depth;
+    unsettle();
+  }
   std::size_t tx_queue_depth() const { return tx_depth_; }
   static constexpr std::size_t kDefaultTxQueue = 32;
   /// The sliding window of load().
@@ -132,12 +135,25 @@ class Bus {
 
   /// Delivers queued frames to endpoints, the transport and taps, until no frame is left that
   /// is due at `now`. Replies produced while delivering are delivered in the same call.
-  std::size_t deliver(Time now) { return quiet_at(now.time_since_epoch().count() * 1000) ? 0 : deliver_due(now); }
+  std::size_t deliver(Time now) {
+    if (settled(now)) return 0;
+    if (quiet_at(now.time_since_epoch().count() * 1000)) {
+      settled_at_ = now;
+      return 0;
+    }
+    return deliver_due(now);
+  }
+  /// True when deliver(now) is known to have nothing to do: it found nothing at this instant and
+  /// nothing was sent or changed since. One compare; the scheduler asks it after every component.
+  bool settled(Time now) const { return now == settled_at_; }
 
   /// Reads everything the transport has received and queues it. Returns the number read.
   std::size_t poll_transport(Time now);
 
-  void set_transport(std::unique_ptr<Transport> transport) { transport_ = std::move(transport); }
+  void set_transport(std::unique_ptr<Transport> transport) {
+    transport_ = std::move(transport);
+    unsettle();
+  }
   Transport* transport() const { return transport_.get(); }
   void add_tap(FrameTap* tap) { taps_.push_back(tap); }
   void set_filter(FrameFilter* filter) { filter_ = filter; }
@@ -184,6 +200,11 @@ class Bus {
     bool online = true;
     RingBuffer<Queued> tx{8};
     std::int64_t suspend_until_ns = 0;  ///< error-passive: suspend transmission after sending
+    // The queue's head as arbitration sees it (valid while tx is not empty): when it may start,
+    // max(its ready_ns, suspend_until_ns), and its arbitration_key().
+    std::int64_t head_ready_ns = 0;
+    std::uint64_t head_key = 0;
+    bool receives = false;  ///< takes frames: a receiver, online, not bus-off (see refresh_receiver)
     std::int64_t recessive_ns = 0;      ///< bus-off: idle time not yet counted as 11-bit sequences
     unsigned recovery_sequences = 0;    ///< bus-off: sequences of 11 recessive bits seen
     ErrorCounters counters;
@@ -202,6 +223,9 @@ class Bus {
     return in_flight_.active || now_ns <= std::max(idle_ns_, idle_accounted_ns_);
   }
   std::size_t deliver_due(Time now);
+  // Every change that could give deliver() work forgets the settled instant.
+  void unsettle() { settled_at_ = kNeverSettled; }
+  static constexpr Time kNeverSettled = Time{Duration{std::numeric_limits<Duration::rep>::min()}};
   void deliver_one(const Pending& p, Time now);
   void deliver_timed(Time now, std::size_t& n);
   bool start_next(std::int64_t now_ns);
@@ -209,9 +233,12 @@ class Bus {
   void tx_push(int from, const Queued& q);
   void tx_pop(int from);
   void tx_clear(int index);
-  // receivers_: endpoints that take frames (a receiver, online, not bus-off), a bit each.
+  // Endpoint::receives: a receiver, online, not bus-off; rx_list_ lists them.
   void refresh_receiver(int index);
+  // Sets the head's arbitration fields from the queue's front and suspend_until_ns.
+  static void refresh_head(Endpoint& ep);
   void complete(Time now);
+  void deliver_to_receivers(const CanFrame& frame, int from, Time at);
   void release_delayed(Time now);
   Endpoint* endpoint_of(int from) { return from == kWire ? &wire_ : &endpoints_[static_cast<std::size_t>(from)]; }
   bool participates(int index) const;
@@ -247,7 +274,17 @@ class Bus {
   // Endpoints whose transmit queue holds a frame, a bit each (the wire's queue is wire_.tx), so
   // arbitration looks only at queues with something in them.
   std::vector<std::uint64_t> tx_pending_;
-  std::vector<std::uint64_t> receivers_;
+  // The endpoints that take frames, in endpoint order (rebuilt when one starts or stops taking
+  // them, within the capacity attach() reserved); rx_version_ counts the rebuilds.
+  struct Rx {
+    FrameReceiver* receiver;
+    int index;
+  };
+  std::vector<Rx> rx_list_;
+  std::uint64_t rx_version_ = 0;
+  // Load window: the bucket the last frame ended in, [load_lo_ns_, load_lo_ns_ + 1 ms).
+  std::int64_t load_lo_ns_ = std::numeric_limits<std::int64_t>::min() / 2;  // none yet
+  std::size_t load_index_ = 0;
   FrameBitsCache bits_cache_;
   // No queue head is ready before this instant (a lower bound: exact after start_next() scanned
   // the queues, lowered when a head appears): deliver() skips the queues while it is >= now.
@@ -257,6 +294,7 @@ class Bus {
   std::int64_t idle_ns_ = 0;           // the bus is free from here
   std::int64_t idle_accounted_ns_ = 0; // idle time counted for bus-off recovery up to here
   std::int64_t now_ns_ = 0;            // the last deliver()
+  Time settled_at_ = kNeverSettled;    // deliver() at this instant has nothing to do (see settled())
   std::uint64_t busy_ns_ = 0;
   // Load window: busy nanoseconds per millisecond. A frame is counted when it starts, so buckets
   // ahead of now are written too (the longest frame at 10 kbit/s lasts 16 ms).

@@ -93,45 +93,57 @@ std::uint16_t can_crc15(const std::uint8_t* bits, unsigned count) {
   return crc;
 }
 
-FrameBits frame_bits(const CanFrame& frame) {
+FrameHeaderBits frame_header_bits(const CanFrame& frame) {
   const unsigned dlc = frame.dlc > 8 ? 8u : frame.dlc;
-  const unsigned data_bytes = frame.rtr ? 0u : dlc;
   const std::uint64_t rtr = frame.rtr ? 1 : 0;
   // SOF .. DLC, right-aligned in whole bytes (the zero bits in front are padding).
   std::uint64_t header;
   unsigned header_bytes;
-  unsigned header_bits;
+  FrameHeaderBits out;
+  out.data_bytes = static_cast<std::uint8_t>(frame.rtr ? 0u : dlc);
   if (!frame.extended) {
     // SOF, 11-bit identifier, RTR, IDE, r0, DLC.
     header = (std::uint64_t{frame.id & 0x7FF} << 7) | (rtr << 6) | dlc;
     header_bytes = 3;
-    header_bits = 19;
+    out.header_bits = 19;
   } else {
     // SOF, base identifier, SRR, IDE, 18-bit extension, RTR, r1, r0, DLC.
     header = (std::uint64_t{(frame.id >> 18) & 0x7FF} << 27) | (std::uint64_t{3} << 25) |
              (std::uint64_t{frame.id & 0x3FFFF} << 7) | (rtr << 6) | dlc;
     header_bytes = 5;
-    header_bits = 39;
+    out.header_bits = 39;
   }
   std::uint16_t crc = 0;
   for (unsigned i = header_bytes; i-- > 0;) crc = crc_byte(crc, static_cast<std::uint8_t>(header >> (8 * i)));
-  for (unsigned i = 0; i < data_bytes; ++i) crc = crc_byte(crc, frame.data[i]);
-
   // After five equal bits the transmitter inserts one of the other level; it counts as the
   // first bit of the next run.
   Stuffing st;
   const unsigned top = header_bytes - 1;
   st.add(frame.extended ? kStuff7 : kStuff3, static_cast<unsigned>(header >> (8 * top)));
   for (unsigned i = top; i-- > 0;) st.add(kStuff8, static_cast<unsigned>(header >> (8 * i)));
-  for (unsigned i = 0; i < data_bytes; ++i) st.add(kStuff8, frame.data[i]);
+  out.crc = crc;
+  out.stuff_state = static_cast<std::uint8_t>(st.state);
+  out.stuff_bits = static_cast<std::uint8_t>(st.bits);
+  return out;
+}
+
+FrameBits frame_bits(const FrameHeaderBits& header, const CanFrame& frame) {
+  std::uint16_t crc = header.crc;
+  Stuffing st{header.stuff_state, header.stuff_bits};
+  for (unsigned i = 0; i < header.data_bytes; ++i) {
+    crc = crc_byte(crc, frame.data[i]);
+    st.add(kStuff8, frame.data[i]);
+  }
   st.add(kStuff8, crc >> 7);
   st.add(kStuff7, crc & 0x7Fu);
 
   FrameBits out;
-  out.stuffed_region = header_bits + 8 * data_bytes + 15;
+  out.stuffed_region = header.header_bits + 8u * header.data_bytes + 15;
   out.stuff_bits = st.bits;
   out.crc = crc;
   return out;
 }
+
+FrameBits frame_bits(const CanFrame& frame) { return frame_bits(frame_header_bits(frame), frame); }
 
 }  // namespace sim

@@ -35,9 +35,23 @@ std::uint16_t can_crc15(const std::uint8_t* bits, unsigned count);
 /// The frame's exact bit count and where they come from.
 FrameBits frame_bits(const CanFrame& frame);
 
+/// The part of frame_bits() that depends only on the identifier, format, RTR and DLC: the CRC
+/// register and the stuffing after the header (SOF .. DLC).
+struct FrameHeaderBits {
+  std::uint16_t crc = 0;
+  std::uint8_t stuff_state = 0;  ///< level of the last bit and its run (can_bit_timing.cpp)
+  std::uint8_t stuff_bits = 0;   ///< stuff bits in the header
+  std::uint8_t header_bits = 0;  ///< SOF .. DLC: 19 standard, 39 extended
+  std::uint8_t data_bytes = 0;   ///< bytes in the data field (0 for a remote frame)
+};
+FrameHeaderBits frame_header_bits(const CanFrame& frame);
+/// frame_bits() of a frame whose header gave `header`: only its data and CRC are worked through.
+FrameBits frame_bits(const FrameHeaderBits& header, const CanFrame& frame);
+
 /// frame_bits() of recently seen frames: the bus times every frame, and most repeat exactly
 /// (SYNC, heartbeats, PDOs whose values did not change). Direct-mapped by identifier; an entry
-/// answers only for a frame equal in identifier, format, DLC and all eight data bytes.
+/// answers only for a frame equal in identifier, format, DLC and all eight data bytes. A frame
+/// that differs only in its data (a PDO whose values changed) starts from the entry's header.
 class FrameBitsCache {
  public:
   FrameBits get(const CanFrame& frame) {
@@ -46,7 +60,14 @@ class FrameBitsCache {
     std::uint64_t data;
     std::memcpy(&data, frame.data.data(), sizeof data);
     Entry& e = entries_[(frame.id ^ (frame.id >> 7) ^ (frame.id >> 14)) % kEntries];
-    if (e.meta != meta || e.data != data) e = Entry{meta, data, frame_bits(frame)};
+    if (e.meta != meta) {
+      e.meta = meta;
+      e.header = frame_header_bits(frame);
+    } else if (e.data == data) {
+      return e.bits;
+    }
+    e.data = data;
+    e.bits = frame_bits(e.header, frame);
     return e.bits;
   }
 
@@ -56,6 +77,7 @@ class FrameBitsCache {
   struct Entry {
     std::uint64_t meta = 0;  // identifier, DLC, format; 0: empty
     std::uint64_t data = 0;
+    FrameHeaderBits header;
     FrameBits bits;
   };
   std::array<Entry, kEntries> entries_{};

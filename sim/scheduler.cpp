@@ -22,7 +22,7 @@ std::int64_t Scheduler::monotonic_ns() const {
   return static_cast<std::int64_t>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
 }
 
-void Scheduler::deliver_all() {
+void Scheduler::deliver_pending() {
   const TickProbe probe(TickPart::Bus);
   // Deliver until quiet across buses: a gateway-like component may forward between buses.
   for (int round = 0; round < 8; ++round) {

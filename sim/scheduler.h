@@ -62,10 +62,20 @@ class Scheduler {
   void set_lateness_observer(std::function<void(Duration)> observer) { lateness_observer_ = std::move(observer); }
 
   /// Delivers pending frames on all buses at the current time (used by tests between ticks).
-  void deliver_all();
+  /// Called after every component: when every bus is settled at now (nothing sent since it last
+  /// found nothing to do) it is a compare per bus.
+  void deliver_all() {
+    for (auto* bus : buses_) {
+      if (!bus->settled(now_)) {
+        deliver_pending();
+        return;
+      }
+    }
+  }
 
  private:
   void run_tick();
+  void deliver_pending();
   void run(std::uint64_t max_ticks);
   void wait_for_deadline(std::int64_t deadline_ns);
   std::int64_t monotonic_ns() const;

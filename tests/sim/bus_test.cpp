@@ -63,6 +63,60 @@ TEST(Bus, OfflineEndpointNeitherSendsNorReceives) {
   EXPECT_TRUE(b.frames.empty());
 }
 
+// Receivers are called in endpoint order; one that takes a later endpoint off the bus while a
+// frame is being delivered keeps the frame from it, one that brings it back lets it through.
+TEST(Bus, AReceiverChangingAnotherEndpointsStateMidDeliveryIsHonoured) {
+  struct Switcher : sim::FrameReceiver {
+    sim::Bus* bus = nullptr;
+    int other = -1;
+    bool online = false;
+    void on_frame(const CanFrame&, Time) override { bus->set_online(other, online); }
+  };
+  for (const auto timing : {sim::BusTiming::Ideal, sim::BusTiming::Bit}) {
+    sim::Bus bus("main");
+    bus.set_timing(timing);
+    Recorder a, c, d;
+    Switcher b;
+    const int ea = bus.attach(&a);
+    bus.attach(&b);
+    const int ec = bus.attach(&c);
+    bus.attach(&d);
+    b.bus = &bus;
+    b.other = ec;
+    bus.send(ea, CanFrame::data_frame(0x181, {1}), Time{});
+    bus.deliver(Time{} + sim::milliseconds(1));
+    EXPECT_TRUE(c.frames.empty());
+    EXPECT_EQ(d.frames.size(), 1u);
+    b.online = true;
+    bus.send(ea, CanFrame::data_frame(0x181, {2}), Time{} + sim::milliseconds(1));
+    bus.deliver(Time{} + sim::milliseconds(2));
+    ASSERT_EQ(c.frames.size(), 1u);
+    EXPECT_EQ(c.frames[0].data[0], 2);
+    EXPECT_EQ(d.frames.size(), 2u);
+  }
+}
+
+// deliver() remembers an instant it found nothing to do at; a frame sent afterwards at that
+// instant is still delivered (ideal timing: by the next deliver() at the same instant).
+TEST(Bus, SettledBusStillDeliversWhatIsSentLater) {
+  sim::Bus bus("main");
+  Recorder a, b;
+  const int ea = bus.attach(&a);
+  bus.attach(&b);
+  const Time t = Time{} + sim::milliseconds(3);
+  EXPECT_EQ(bus.deliver(t), 0u);  // time moved: the bus catches up (idle time)
+  EXPECT_FALSE(bus.settled(t));
+  EXPECT_EQ(bus.deliver(t), 0u);  // nothing left at t
+  EXPECT_TRUE(bus.settled(t));
+  bus.send(ea, CanFrame::data_frame(0x181, {1}), t);
+  EXPECT_FALSE(bus.settled(t));
+  EXPECT_EQ(bus.deliver(t), 1u);
+  EXPECT_EQ(b.frames.size(), 1u);
+  EXPECT_EQ(bus.deliver(t), 0u);
+  EXPECT_TRUE(bus.settled(t));
+  EXPECT_FALSE(bus.settled(t + sim::microseconds(1)));
+}
+
 TEST(Bus, FilterCanDropAndDelay) {
   struct DropAndDelay : sim::FrameFilter {
     Verdict on_send(CanFrame& f, int, Time) override {
