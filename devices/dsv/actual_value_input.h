@@ -17,7 +17,7 @@ namespace dsv {
 
 class ActualValueInput {
  public:
-  ActualValueInput(DsvParameters& parameters, const DsvOptions& options) : p_(parameters), o_(options) {}
+  ActualValueInput(DsvParameters& parameters, const DsvOptions& options);
 
   /// One sample: the plant's measurand (SI) and whether the signal wire is broken.
   void sample(double measurand, bool wire_broken);
@@ -34,9 +34,18 @@ class ActualValueInput {
  private:
   double interface_counts_16384(std::int64_t raw) const;  ///< an interface value (mV/µA) in bus counts
   double adc_full_scale() const;                            ///< 10000 mV or 20000 µA
+  /// Min/max reference and interface of closed-loop mode `m` (DsvParameters::scaling_objects), bound.
+  struct Scaling {
+    devices::IntegerEntry min_reference, max_reference, min_interface, max_interface;
+  };
+  const Scaling& scaling(std::int8_t m) const;
+  std::int64_t signal_type() const { return signal_type_ ? signal_type_.as<std::int64_t>() : 0; }  // 2200h
 
   DsvParameters& p_;
   const DsvOptions& o_;
+  // Read every cycle: bound once instead of looked up by index.
+  devices::IntegerEntry signal_type_, cable_break_detection_;  // 2200h, 2201h
+  Scaling scaling_[3];                                          // modes 4, 7, 9
   double signal_ = 0;
 };
 

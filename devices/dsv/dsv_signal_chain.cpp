@@ -22,7 +22,7 @@ DsvSignalChain::DsvSignalChain(DsvParameters& parameters, ActualValueInput& inpu
   loops_[0] = loop_objects(mode::kVprcClosed, od);
   loops_[1] = loop_objects(mode::kDsc, od);
   loops_[2] = loop_objects(mode::kDpc, od);
-  auto e = [this](std::uint16_t index) { return p_.value_entry(index); };
+  auto e = [this](std::uint16_t index) { return p_.bind_value(index); };
   par_ = {e(0x6300), e(0x6B00), e(0x6380), e(0x6B80), e(0x6480), e(0x62F0), e(0x2043),
           e(0x2044), e(0x2045), e(0x2046), e(0x2047), e(0x2048), e(0x22B2), e(0x22B3)};
   ramp_.set_full_scale(1.0);
@@ -243,24 +243,35 @@ void DsvSignalChain::publish_measurements() {
   const std::int8_t m = p_.control_mode();
   for (int i = 0; i < 3; ++i) {
     const std::int8_t lm = i == 0 ? mode::kVprcClosed : i == 1 ? mode::kDsc : mode::kDpc;
-    const bool on = lm == m;
+    if (lm != m) {  // the objects of the other modes read 0
+      dsp408::put(*loops_[i].actual, 0);
+      dsp408::put(*loops_[i].deviation, 0);
+      continue;
+    }
     const double lim = i == 0 ? 32767.0 : 2147483647.0;
-    const double x = on ? input_.value(lm) : 0.0;
-    const double w = on ? loops_[i].setpoint->as<double>() : 0.0;
+    const double x = input_.value(lm);
+    const double w = loops_[i].setpoint->as<double>();
     dsp408::put_rounded(*loops_[i].actual, x, -lim - 1, lim);
     dsp408::put_rounded(*loops_[i].deviation, w - x, -lim - 1, lim);
   }
 }
 
 dsp408::StatusFlags DsvSignalChain::status_flags() const {
+  const std::int8_t m = p_.control_mode();
+  const bool ramps_used = control_.state() == DeviceState::Active && (m == mode::kVpoc || m == mode::kVprcOpen || m == mode::kDcol);
+  if (!ramps_used) return status_flags(ramp_, ramp_b_);
+  // Ramps as the parameters stand now: the TPDO answering an RPDO shows the new ramp at once.
+  dsp408::CommandValueRamp ra = ramp_, rb = ramp_b_;
+  configure_ramps(ra, rb);
+  return status_flags(ra, rb);
+}
+
+dsp408::StatusFlags DsvSignalChain::status_flags(const dsp408::CommandValueRamp& ra, const dsp408::CommandValueRamp& rb) const {
   dsp408::StatusFlags f;
   const std::int8_t m = p_.control_mode();
   const DeviceState s = control_.state();
   const bool live = s == DeviceState::Active;
   if (live && (m == mode::kVpoc || m == mode::kVprcOpen || m == mode::kDcol)) {
-    // Ramps as the parameters stand now: the TPDO answering an RPDO shows the new ramp at once.
-    dsp408::CommandValueRamp ra = ramp_, rb = ramp_b_;
-    configure_ramps(ra, rb);
     // The set point may have changed since the last cycle (an RPDO is answered at once).
     const std::int8_t op = p_.mode_of_operation();
     double w = m == mode::kVpoc ? value(par_.vpoc_a) / 16384.0 : m == mode::kVprcOpen ? value(par_.vprc_a) / 16384.0 : value(par_.dcol) / 100000.0;
@@ -335,7 +346,9 @@ void DsvSignalChain::process(sim::Time now, double dt) {
   out_a_ = driver_ok_a_ ? dither_.apply(ia, now, fs) : 0.0;
   out_b_ = driver_ok_b_ ? dither_.apply(ib, now, fs) : 0.0;
   publish_measurements();
-  control_.publish_status();
+  // The ramps are consulted in ACTIVE with an open-loop mode only, and then open_loop() has just
+  // configured them with the parameters as they stand: the flags status_flags() would find.
+  control_.publish_status(status_flags(ramp_, ramp_b_));
 }
 
 }  // namespace dsv

@@ -51,11 +51,12 @@ class DsvSignalChain {
         *integrator_type, *target_type, *target_threshold, *target_delay, *trailing_type, *trailing_threshold,
         *trailing_delay, *off_threshold, *off_delay, *min_reference, *max_reference;
   };
-  /// Parameters read every cycle (DsvParameters::value_entry, bound once; null when absent).
+  /// Parameters read every cycle (DsvParameters::bind_value, bound once; unbound when absent).
   struct Parameters {
-    const canopen::OdEntry *vpoc_a, *vpoc_b, *vprc_a, *vprc_b, *dcol, *inversion, *error_handling, *system_inverted,
-        *falling_a, *falling_b, *imin_always, *solenoid_off_disabled, *speed_pos, *speed_neg;
+    devices::IntegerEntry vpoc_a, vpoc_b, vprc_a, vprc_b, dcol, inversion, error_handling, system_inverted, falling_a,
+        falling_b, imin_always, solenoid_off_disabled, speed_pos, speed_neg;
   };
+  static std::int64_t value(const devices::IntegerEntry& e) { return e ? e.as<std::int64_t>() : 0; }
   static std::int64_t value(const canopen::OdEntry* e) { return e ? e->as<std::int64_t>() : 0; }
   LoopObjects loop_objects(std::int8_t m, canopen::ObjectDictionary& od);
   template <typename E>
@@ -63,6 +64,8 @@ class DsvSignalChain {
   const LoopObjects* loop(std::int8_t m) const;
 
   void configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const;
+  /// status_flags() with ramps that have the parameters as they stand now (configure_ramps()).
+  dsp408::StatusFlags status_flags(const dsp408::CommandValueRamp& ra, const dsp408::CommandValueRamp& rb) const;
   void open_loop(std::int8_t m, bool active, double dt, double& a, double& b);
   void closed_loop(std::int8_t m, bool active, sim::Time now, double dt, double& a, double& b, bool& off);
   double to_amperes(std::int64_t counts) const { return static_cast<double>(counts) * o_.current_full_scale() / 16384.0; }

@@ -59,6 +59,8 @@ class Md2Channel {
   double span(std::int8_t m) const;
   void publish_measurements();
   dsp408::StatusFlags status_flags() const;  ///< all clear outside ACTIVE and HOLD
+  /// The same for mode `m`, state `s` and the live set point (setpoint_raw(), used in ACTIVE).
+  dsp408::StatusFlags status_flags(std::int8_t m, dsp408::DeviceState s, double live_setpoint) const;
   bool ramp_mode(std::int8_t m) const { return m == mode::kVpoc || m == mode::kVprcOpen; }
   bool speed_mode(std::int8_t m) const { return o_.is_speed_mode(m); }
 
@@ -88,6 +90,7 @@ class Md2Channel {
   double effective_ = 0;       ///< set point after ramp / rate limitation
   double last_actual_ = 0;
   bool driver_ok_a_ = true, driver_ok_b_ = true;
+  bool at_rest_ = false;  ///< ramp, controllers and effective set point already reset (idle)
 };
 
 }  // namespace md2
