@@ -40,8 +40,7 @@ void ActualValueInput::sample(double measurand, bool wire_broken) {
 }
 
 bool ActualValueInput::cable_break() const {
-  const std::int64_t detection = cable_break_detection_ ? cable_break_detection_.as<std::int64_t>() : 0;
-  return detection == 1 && signal_type() == 3 && signal_ < o_.cable_break_ma;
+  return cable_break_detection_.get() == 1 && signal_type() == 3 && signal_ < o_.cable_break_ma;
 }
 
 double ActualValueInput::adc_full_scale() const { return signal_type() == 0 ? 10000.0 : 20000.0; }
@@ -66,7 +65,7 @@ double ActualValueInput::value(std::int8_t m) const {
     return std::clamp(std::round(counts), 0.0, 16384.0);
   }
   const Scaling& s = scaling(m);
-  auto get = [](const devices::IntegerEntry& e) { return e ? e.as<std::int64_t>() : 0; };  // as DsvParameters::value()
+  auto get = [](const dsp408::IntegerParameter& e) { return e.get(); };  // as DsvParameters::value()
   const double min_ref = static_cast<double>(get(s.min_reference));
   const double max_ref = static_cast<double>(get(s.max_reference));
   const double fs = adc_full_scale();

@@ -136,6 +136,7 @@ void Dsv::install_device_hooks() {
     return SdoAbort::None;
   });
   temperature_entry_ = od.entry(0x2002, 0);
+  temperature_out_ = dsp408::RoundedOutput(temperature_entry_, -55, 150);
   od.add_read_hook(0x2002, 0, [this](OdEntry& e, Origin) {
     dsp408::put_rounded(e, temperature_, -55, 150);
     return SdoAbort::None;
@@ -281,7 +282,7 @@ void Dsv::process(sim::Time now, sim::Duration dt) {
   solenoid_b_ = outputs_allowed() ? chain_->solenoid_b() : 0.0;
   const double target = options_.ambient_temperature + options_.thermal_gain * (solenoid_a_ * solenoid_a_ + solenoid_b_ * solenoid_b_);
   temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
-  dsp408::put_rounded(*temperature_entry_, temperature_, -55, 150);
+  temperature_out_.put(temperature_);
   restore_mapping_entry();
   restore_alias_entry();
 }

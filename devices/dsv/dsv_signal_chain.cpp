@@ -97,24 +97,37 @@ void DsvSignalChain::on_state_change(DeviceState from, DeviceState to) {
   }
 }
 
-double DsvSignalChain::current(int solenoid, double demand, std::int8_t m, bool closed) const {
+double DsvSignalChain::closed_loop_current(int solenoid, double demand) const {
   const bool a = solenoid == 0;
   dsp408::SolenoidCurve c;
   c.i_min = to_amperes(p_.shared(a ? Shared::IminA : Shared::IminB));
   c.i_max = to_amperes(p_.shared(a ? Shared::ImaxA : Shared::ImaxB));
-  if (closed) {
-    c.falling = value(a ? par_.falling_a : par_.falling_b) == 1;
-    c.imin_at_zero = value(par_.imin_always) == 0;  // "0 = Imin always active yes"
-    return dsp408::solenoid_current(c, demand);
-  }
-  if (p_.shared(Shared::DeadbandType) == 1) {
-    // m6 has threshold A only, used for both sides.
-    const auto thr = (a || m == mode::kDcol) ? p_.shared(Shared::DeadbandA) : p_.shared(Shared::DeadbandB);
-    c.threshold = static_cast<double>(thr) / 32768.0;  // 0..16384 = 0..50 %
-    c.rescale = true;
-  }
+  c.falling = value(a ? par_.falling_a : par_.falling_b) == 1;
+  c.imin_at_zero = value(par_.imin_always) == 0;  // "0 = Imin always active yes"
+  return dsp408::solenoid_current(c, demand);
+}
+
+void DsvSignalChain::open_loop_currents(std::int8_t m, double a, double b, double& ia, double& ib) {
+  // Each shared parameter read once. A demand of 0 or less is 0 A in open loop (no "Imin always
+  // active" there): nothing to read for it.
+  const bool deadband = p_.shared(Shared::DeadbandType) == 1;
   const bool optimise = (m == mode::kVpoc || m == mode::kVprcOpen) && p_.characteristic_on();
-  return dsp408::solenoid_current(c, demand, optimise ? &p_.curve(solenoid) : nullptr);
+  auto side = [&](int solenoid, double demand) {
+    if (demand <= 0) return 0.0;
+    const bool is_a = solenoid == 0;
+    dsp408::SolenoidCurve c;
+    c.i_min = to_amperes(p_.shared(is_a ? Shared::IminA : Shared::IminB));
+    c.i_max = to_amperes(p_.shared(is_a ? Shared::ImaxA : Shared::ImaxB));
+    if (deadband) {
+      // m6 has threshold A only, used for both sides.
+      const auto thr = (is_a || m == mode::kDcol) ? p_.shared(Shared::DeadbandA) : p_.shared(Shared::DeadbandB);
+      c.threshold = static_cast<double>(thr) / 32768.0;  // 0..16384 = 0..50 %
+      c.rescale = true;
+    }
+    return dsp408::solenoid_current(c, demand, optimise ? &p_.curve(solenoid) : nullptr);
+  };
+  ia = side(0, a);
+  ib = o_.solenoids == 2 ? side(1, b) : 0.0;
 }
 
 void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const {
@@ -129,8 +142,7 @@ void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::Comman
   b.set_times({b_up, b_down, b_up, b_down});
 }
 
-void DsvSignalChain::open_loop(std::int8_t m, bool active, double dt, double& a, double& b) {
-  const std::int8_t op = p_.mode_of_operation();
+void DsvSignalChain::open_loop(std::int8_t m, std::int8_t op, bool active, double dt, double& a, double& b) {
   double w = 0, wb = 0;
   switch (m) {
     case mode::kVpoc:
@@ -300,6 +312,7 @@ dsp408::StatusFlags DsvSignalChain::status_flags(const dsp408::CommandValueRamp&
 
 void DsvSignalChain::process(sim::Time now, double dt) {
   const std::int8_t m = p_.control_mode();
+  const std::int8_t op = p_.mode_of_operation();
   const DeviceState s = control_.state();
   const bool active = s == DeviceState::Active;
   const bool hold = s == DeviceState::Hold || s == DeviceState::FaultHold;
@@ -319,13 +332,12 @@ void DsvSignalChain::process(sim::Time now, double dt) {
     bool off = false;
     if (is_closed_loop(m)) {
       closed_loop(m, active, now, dt, a, b, off);
-      ia = current(0, a, m, true);
-      ib = o_.solenoids == 2 ? current(1, b, m, true) : 0.0;
+      ia = closed_loop_current(0, a);
+      ib = o_.solenoids == 2 ? closed_loop_current(1, b) : 0.0;
       if (off) ia = ib = 0;
     } else if (m != mode::kLocal) {
-      open_loop(m, active, dt, a, b);
-      ia = current(0, a, m, false);
-      ib = o_.solenoids == 2 ? current(1, b, m, false) : 0.0;
+      open_loop(m, op, active, dt, a, b);
+      open_loop_currents(m, a, b, ia, ib);
     }
   } else {
     ramp_.reset(0);
@@ -346,9 +358,30 @@ void DsvSignalChain::process(sim::Time now, double dt) {
   out_a_ = driver_ok_a_ ? dither_.apply(ia, now, fs) : 0.0;
   out_b_ = driver_ok_b_ ? dither_.apply(ib, now, fs) : 0.0;
   publish_measurements();
-  // The ramps are consulted in ACTIVE with an open-loop mode only, and then open_loop() has just
-  // configured them with the parameters as they stand: the flags status_flags() would find.
-  control_.publish_status(status_flags(ramp_, ramp_b_));
+
+  // The flags status_flags() would find now, from what this cycle computed: in ACTIVE with an
+  // open-loop mode, open_loop() has just configured the ramps with the parameters as they stand
+  // and its targets are the set points status_flags() derives (but set point B of mode 6, which
+  // open_loop() does not use).
+  dsp408::StatusFlags f;
+  const bool open_mode = m == mode::kVpoc || m == mode::kVprcOpen || m == mode::kDcol;
+  if (active && open_mode) {
+    f.ramp_running = ramp_.running(target_);
+    if (op == 3) {
+      const double wb = m == mode::kDcol ? std::clamp(value(par_.vprc_b) / 16384.0, 0.0, 1.0) : target_b_;
+      f.ramp_running = f.ramp_running || ramp_b_.running(wb);
+    }
+    if (op == 3) {
+      const std::uint16_t cw = control_.dsm().control_word();
+      f.solenoid_a_released = cw & dsp408::control::kReleaseSolenoidA;
+      f.solenoid_b_released = cw & dsp408::control::kReleaseSolenoidB;
+    }
+  }
+  if (is_closed_loop(m) && (active || s == DeviceState::Hold)) {
+    f.window_reached = window_reached_;
+    f.warning = trailing_;
+  }
+  control_.publish_status(f);
 }
 
 }  // namespace dsv

@@ -53,10 +53,10 @@ class DsvSignalChain {
   };
   /// Parameters read every cycle (DsvParameters::bind_value, bound once; unbound when absent).
   struct Parameters {
-    devices::IntegerEntry vpoc_a, vpoc_b, vprc_a, vprc_b, dcol, inversion, error_handling, system_inverted, falling_a,
+    dsp408::IntegerParameter vpoc_a, vpoc_b, vprc_a, vprc_b, dcol, inversion, error_handling, system_inverted, falling_a,
         falling_b, imin_always, solenoid_off_disabled, speed_pos, speed_neg;
   };
-  static std::int64_t value(const devices::IntegerEntry& e) { return e ? e.as<std::int64_t>() : 0; }
+  static std::int64_t value(const dsp408::IntegerParameter& e) { return e.get(); }
   static std::int64_t value(const canopen::OdEntry* e) { return e ? e->as<std::int64_t>() : 0; }
   LoopObjects loop_objects(std::int8_t m, canopen::ObjectDictionary& od);
   template <typename E>
@@ -66,10 +66,12 @@ class DsvSignalChain {
   void configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const;
   /// status_flags() with ramps that have the parameters as they stand now (configure_ramps()).
   dsp408::StatusFlags status_flags(const dsp408::CommandValueRamp& ra, const dsp408::CommandValueRamp& rb) const;
-  void open_loop(std::int8_t m, bool active, double dt, double& a, double& b);
+  void open_loop(std::int8_t m, std::int8_t op, bool active, double dt, double& a, double& b);
   void closed_loop(std::int8_t m, bool active, sim::Time now, double dt, double& a, double& b, bool& off);
   double to_amperes(std::int64_t counts) const { return static_cast<double>(counts) * o_.current_full_scale() / 16384.0; }
-  double current(int solenoid, double demand, std::int8_t m, bool closed) const;
+  double closed_loop_current(int solenoid, double demand) const;
+  /// Open-loop currents of both solenoids in mode `m` for demands a and b.
+  void open_loop_currents(std::int8_t m, double a, double b, double& ia, double& ib);
 
   DsvParameters& p_;
   ActualValueInput& input_;

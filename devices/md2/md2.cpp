@@ -47,6 +47,7 @@ Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
     channels_.push_back(std::make_unique<Md2Channel>(n.od(), options_, c));
   }
   temperature_entry_ = n.od().entry(0x2002, 0);
+  temperature_out_ = dsp408::RoundedOutput(temperature_entry_, -55, 150);
   n.od().add_read_hook(0x2002, 0, [this](canopen::OdEntry& e, canopen::Origin) {
     dsp408::put_rounded(e, temperature_, -55, 150);
     return canopen::SdoAbort::None;
@@ -112,7 +113,7 @@ void Md2::process(sim::Time now, sim::Duration dt) {
   const double target = options_.ambient_temperature +
                         options_.thermal_gain * (ch1.solenoid_a * ch1.solenoid_a + ch1.solenoid_b * ch1.solenoid_b);
   temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
-  dsp408::put_rounded(*temperature_entry_, temperature_, -55, 150);
+  temperature_out_.put(temperature_);
 }
 
 sim::PortList Md2::ports() {

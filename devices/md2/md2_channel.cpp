@@ -176,30 +176,19 @@ void Md2Channel::publish_measurements() {
   }
 }
 
-void Md2Channel::process(sim::Time now, double dt) {
+void Md2Channel::reset_functions() {
+  ramp_.reset(0);
+  pid_.reset();
+  n_point_.reset();
+  effective_ = 0;
+  at_rest_ = true;
+}
+
+void Md2Channel::process_live(sim::Time now, double dt, DeviceState s) {
   const std::int8_t m = control_mode();
-  const DeviceState s = control_.state();
   const double n = o_.bus_full_scale;
   last_actual_ = actual_raw();
-
   const bool active = s == DeviceState::Active;
-  const bool hold = s == DeviceState::Hold || s == DeviceState::FaultHold;
-  if (!active && !hold) {
-    // INIT, DISABLED, FAULT, NOT_READY: functions disabled, solenoids 0 A. Only a live state
-    // moves the ramp, the controllers and the effective set point away from rest.
-    if (!at_rest_) {
-      ramp_.reset(0);
-      pid_.reset();
-      n_point_.reset();
-      effective_ = 0;
-      at_rest_ = true;
-    }
-    limiter_.reset(last_actual_);
-    solenoid_a = solenoid_b = 0;
-    publish_measurements();
-    control_.publish_status();
-    return;
-  }
   at_rest_ = false;
   double w = 0;  // the live set point (ACTIVE only; setpoint_raw() is pure)
   if (active) {
