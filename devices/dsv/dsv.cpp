@@ -195,6 +195,7 @@ void Dsv::power_on(sim::Time now) {
 }
 
 void Dsv::reset_model() {
+  conditions_passed_ = kNoConditionsPassed;  // the errors were cleared: detect afresh
   chain_->reset();
   open_a_detected_ = open_b_detected_ = false;
   if (curve_restore_pending_) {
@@ -261,13 +262,26 @@ void Dsv::detect_errors() {
   // the wire is whole again (a fault reset meanwhile is refused).
   open_a_detected_ = faults_.solenoid_a_open && (open_a_detected_ || chain_->commanded_a() > 0);
   open_b_detected_ = faults_.solenoid_b_open && (open_b_detected_ || chain_->commanded_b() > 0);
-  e.set_condition(kSolenoidA, kRegCurrent, faults_.solenoid_a_short || open_a_detected_);
-  e.set_condition(kSolenoidB, kRegCurrent, options_.solenoids == 2 && (faults_.solenoid_b_short || open_b_detected_));
-  e.set_condition(kOutputCurrent, kRegCurrent, faults_.over_current);
-  e.set_condition(kSupplyLow, kRegVoltage, faults_.supply_low || supply_voltage_ < options_.supply_min);
-  e.set_condition(kControlVoltageLow, kRegVoltage, is_closed_loop(parameters_->control_mode()) && input_->cable_break());
-  e.set_condition(kGeneral, kRegGeneric, faults_.general_error);
-  e.set_condition(kEeprom, kRegGeneric, faults_.resolution_update_failure);
+  const bool solenoid_a = faults_.solenoid_a_short || open_a_detected_;
+  const bool solenoid_b = options_.solenoids == 2 && (faults_.solenoid_b_short || open_b_detected_);
+  const bool over_current = faults_.over_current;
+  const bool supply_low = faults_.supply_low || supply_voltage_ < options_.supply_min;
+  const bool control_voltage_low = is_closed_loop(parameters_->control_mode()) && input_->cable_break();
+  const bool general = faults_.general_error;
+  const bool eeprom = faults_.resolution_update_failure;
+  // Passing a condition as it was passed last time changes nothing (no edge): only a change, or
+  // the first cycle after the errors were cleared (application reset), needs DeviceErrors.
+  const unsigned now = solenoid_a | solenoid_b << 1 | over_current << 2 | supply_low << 3 | control_voltage_low << 4 |
+                       general << 5 | eeprom << 6;
+  if (now == conditions_passed_) return;
+  conditions_passed_ = now;
+  e.set_condition(kSolenoidA, kRegCurrent, solenoid_a);
+  e.set_condition(kSolenoidB, kRegCurrent, solenoid_b);
+  e.set_condition(kOutputCurrent, kRegCurrent, over_current);
+  e.set_condition(kSupplyLow, kRegVoltage, supply_low);
+  e.set_condition(kControlVoltageLow, kRegVoltage, control_voltage_low);
+  e.set_condition(kGeneral, kRegGeneric, general);
+  e.set_condition(kEeprom, kRegGeneric, eeprom);
 }
 
 void Dsv::process(sim::Time now, sim::Duration dt) {

@@ -65,6 +65,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
 
   void install_device_hooks();
   void detect_errors();
+  static constexpr unsigned kNoConditionsPassed = ~0u;
   void restore_mapping_entry();
   void restore_alias_entry();
 
@@ -92,6 +93,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
     bool over_current = false, supply_low = false, general_error = false, memory_failure = false;
     bool resolution_update_failure = false, actual_cable_break = false, paso_control = false;
   } faults_;
+  unsigned conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on (bits)
 };
 
 }  // namespace dsv

@@ -63,6 +63,7 @@ Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
 }
 
 void Md2::reset_model() {
+  conditions_passed_ = kNoConditionsPassed;  // the errors were cleared: detect afresh
   for (auto& ch : channels_) ch->reset_model();
   temperature_ = options_.ambient_temperature;
 }
@@ -87,13 +88,22 @@ void Md2::regenerate_pdos() {
 }
 
 void Md2::detect_errors() {
+  const bool solenoid_1 = faults_.solenoid_a_open || faults_.solenoid_a_short;
+  const bool solenoid_2 = options_.solenoids == 2 && (faults_.solenoid_b_open || faults_.solenoid_b_short);
+  const bool supply_low = faults_.supply_low || supply_voltage_ < options_.supply_min;
+  const bool control_voltage_low = faults_.analog_signal_lost && channels_[0]->uses_analog_input();
+  const bool general = faults_.general_error;
+  // Passing a condition as it was passed last time changes nothing (no edge): only a change, or
+  // the first cycle after the errors were cleared (application reset), needs DeviceErrors.
+  const unsigned now = solenoid_1 | solenoid_2 << 1 | supply_low << 2 | control_voltage_low << 3 | general << 4;
+  if (now == conditions_passed_) return;
+  conditions_passed_ = now;
   auto& e = errors();
-  e.set_condition(kSolenoid1, kRegCurrent, faults_.solenoid_a_open || faults_.solenoid_a_short);
-  e.set_condition(kSolenoid2, kRegCurrent,
-                  options_.solenoids == 2 && (faults_.solenoid_b_open || faults_.solenoid_b_short));
-  e.set_condition(kSupplyLow, kRegVoltage, faults_.supply_low || supply_voltage_ < options_.supply_min);
-  e.set_condition(kControlVoltageLow, kRegVoltage, faults_.analog_signal_lost && channels_[0]->uses_analog_input());
-  e.set_condition(kGeneral, kRegGeneric, faults_.general_error);
+  e.set_condition(kSolenoid1, kRegCurrent, solenoid_1);
+  e.set_condition(kSolenoid2, kRegCurrent, solenoid_2);
+  e.set_condition(kSupplyLow, kRegVoltage, supply_low);
+  e.set_condition(kControlVoltageLow, kRegVoltage, control_voltage_low);
+  e.set_condition(kGeneral, kRegGeneric, general);
 }
 
 void Md2::process(sim::Time now, sim::Duration dt) {

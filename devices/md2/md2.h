@@ -57,6 +57,7 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
   void process(sim::Time now, sim::Duration dt) override;
 
   void detect_errors();
+  static constexpr unsigned kNoConditionsPassed = ~0u;
 
   Md2Options options_;
   std::unique_ptr<canopen::Node> node_owner_;
@@ -74,6 +75,7 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
     bool supply_low = false, analog_signal_lost = false, general_error = false;
     bool storage_failure = false, paso_control = false;
   } faults_;
+  unsigned conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on (bits)
 };
 
 }  // namespace md2
