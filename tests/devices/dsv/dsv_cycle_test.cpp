@@ -175,4 +175,18 @@ TEST_F(DsvCycleTest, DitherWrittenBetweenCyclesActsInTheNextCycle) {
   EXPECT_NEAR(dev->solenoid_a(), amps(0.5), 1e-12);
 }
 
+TEST_F(DsvCycleTest, AConditionStillPresentAfterAResetNodeRaisesItsEmcyAgain) {
+  auto supply_emcys = [](const Frames& frames) {
+    return std::count_if(frames.begin(), frames.end(), [](const Frame& f) {
+      return f.id == 0x081 && f.data.size() >= 2 && f.data[0] == 0x12 && f.data[1] == 0x34;
+    });
+  };
+  ASSERT_EQ(dev->set_input("supply_voltage", 12), "");  // below u_supply_min
+  h->run_ms(5);
+  EXPECT_EQ(supply_emcys(h->take()), 1);
+  h->nmt(0x81, 1);  // reset node: the errors are forgotten and detected afresh
+  h->run_ms(5);
+  EXPECT_EQ(supply_emcys(h->take()), 1);
+}
+
 }  // namespace dsvtest

@@ -99,4 +99,23 @@ TEST_F(Md2CycleTest, ARestedChannelRampsFromZeroAgain) {
   EXPECT_EQ(ch().solenoid_a, 0.0);
 }
 
+TEST_F(Md2CycleTest, AConditionStillPresentAfterAResetNodeRaisesItsEmcyAgain) {
+  auto general_emcys = [](const Frames& frames) {
+    return std::count_if(frames.begin(), frames.end(), [](const Frame& f) {
+      return f.id == 0x081 && f.data.size() >= 2 && f.data[0] == 0x00 && f.data[1] == 0x10;
+    });
+  };
+  dev->inject_fault("general_error", true);
+  h->run_ms(5);
+  EXPECT_EQ(general_emcys(h->take()), 1);  // once: the condition persists without a new edge
+  h->nmt(0x81, 1);  // reset node: the errors are forgotten and detected afresh
+  h->run_ms(5);
+  EXPECT_EQ(general_emcys(h->take()), 1);
+  dev->inject_fault("general_error", false);
+  h->run_ms(2);
+  dev->inject_fault("general_error", true);  // a new edge
+  h->run_ms(2);
+  EXPECT_EQ(general_emcys(h->take()), 0);  // still latched: no repeated EMCY (§4.4.1)
+}
+
 }  // namespace md2test
