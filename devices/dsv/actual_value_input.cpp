@@ -29,16 +29,6 @@ const ActualValueInput::Scaling& ActualValueInput::scaling(std::int8_t m) const 
   return scaling_[m == mode::kVprcClosed ? 0 : m == mode::kDsc ? 1 : 2];
 }
 
-void ActualValueInput::sample(double measurand, bool wire_broken) {
-  const double p = std::clamp((measurand - o_.sensor_min) / (o_.sensor_max - o_.sensor_min), 0.0, 1.0);
-  switch (signal_type()) {
-    case 0: signal_ = 10.0 * p; break;                   // V
-    case 2: signal_ = wire_broken ? 0 : 20.0 * p; break;  // mA
-    default: signal_ = wire_broken ? 0 : 4.0 + 16.0 * p; break;
-  }
-  if (wire_broken && signal_type() == 0) signal_ = 0;
-}
-
 bool ActualValueInput::cable_break() const {
   return cable_break_detection_.get() == 1 && signal_type() == 3 && signal_ < o_.cable_break_ma;
 }

@@ -8,6 +8,7 @@
 // A broken 4..20 mA loop (below the threshold, 2201h = 1) is the cable break (EMCY 0x3422).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "devices/dsv/dsv_options.h"
@@ -20,7 +21,16 @@ class ActualValueInput {
   ActualValueInput(DsvParameters& parameters, const DsvOptions& options);
 
   /// One sample: the plant's measurand (SI) and whether the signal wire is broken.
-  void sample(double measurand, bool wire_broken);
+  void sample(double measurand, bool wire_broken) {
+    const double p = std::clamp((measurand - o_.sensor_min) / (o_.sensor_max - o_.sensor_min), 0.0, 1.0);
+    const std::int64_t type = signal_type();
+    switch (type) {
+      case 0: signal_ = 10.0 * p; break;                   // V
+      case 2: signal_ = wire_broken ? 0 : 20.0 * p; break;  // mA
+      default: signal_ = wire_broken ? 0 : 4.0 + 16.0 * p; break;
+    }
+    if (wire_broken && type == 0) signal_ = 0;
+  }
   /// The analog signal: V for signal type 0, mA for 2 and 3.
   double signal() const { return signal_; }
   bool cable_break() const;

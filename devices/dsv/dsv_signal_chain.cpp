@@ -130,16 +130,34 @@ void DsvSignalChain::open_loop_currents(std::int8_t m, double a, double b, doubl
   ib = o_.solenoids == 2 ? side(1, b) : 0.0;
 }
 
-void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const {
-  const bool on = p_.shared(Shared::RampType) == 3;
-  const auto sec = [this](Shared s) { return static_cast<double>(p_.shared(s)) / 1000.0; };
+DsvSignalChain::RampParameters DsvSignalChain::ramp_parameters() const {
+  return {p_.shared(Shared::RampType), p_.shared(Shared::RampAUp), p_.shared(Shared::RampADown), p_.shared(Shared::RampBUp),
+          p_.shared(Shared::RampBDown)};
+}
+
+void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b, const RampParameters& r) {
+  const bool on = r[0] == 3;
+  const auto sec = [](std::int64_t ms) { return static_cast<double>(ms) / 1000.0; };
   a.set_enabled(on);
   b.set_enabled(on);
-  const double a_up = sec(Shared::RampAUp), a_down = sec(Shared::RampADown);
-  const double b_up = sec(Shared::RampBUp), b_down = sec(Shared::RampBDown);
+  const double a_up = sec(r[1]), a_down = sec(r[2]);
+  const double b_up = sec(r[3]), b_down = sec(r[4]);
   a.set_times({a_up, a_down, b_up, b_down});
   // Set point B (op-mode 3) is ramped on its own magnitude with the B times.
   b.set_times({b_up, b_down, b_up, b_down});
+}
+
+void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const {
+  configure_ramps(a, b, ramp_parameters());
+}
+
+void DsvSignalChain::configure_own_ramps() {
+  // Nothing else configures ramp_ and ramp_b_: with the parameters as last time they are set.
+  const RampParameters r = ramp_parameters();
+  if (ramps_configured_ && r == ramps_configured_with_) return;
+  configure_ramps(ramp_, ramp_b_, r);
+  ramps_configured_with_ = r;
+  ramps_configured_ = true;
 }
 
 void DsvSignalChain::open_loop(std::int8_t m, std::int8_t op, bool active, double dt, double& a, double& b) {
@@ -161,7 +179,7 @@ void DsvSignalChain::open_loop(std::int8_t m, std::int8_t op, bool active, doubl
     if (op == 2 || (op == 1 && o_.op_mode1_bipolar)) w = -w;
     if (op == 1 && !o_.op_mode1_bipolar) w = 1.0 - w;
   }
-  configure_ramps(ramp_, ramp_b_);
+  configure_own_ramps();
   target_ = op == 3 ? std::clamp(w, 0.0, 1.0) : w;
   target_b_ = std::clamp(wb, 0.0, 1.0);
   if (active) {

@@ -8,6 +8,7 @@
 // gated by the device state (ACTIVE live, HOLD frozen, INIT/DISABLED off, FAULT per 2043h).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "devices/dsv/actual_value_input.h"
@@ -63,7 +64,13 @@ class DsvSignalChain {
   static LoopObjects loop_objects_of(std::int8_t m, E e);
   const LoopObjects* loop(std::int8_t m) const;
 
+  /// Ramp type and the A up, A down, B up, B down times (shared parameters).
+  using RampParameters = std::array<std::int64_t, 5>;
+  RampParameters ramp_parameters() const;
+  static void configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b, const RampParameters& r);
   void configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const;
+  /// configure_ramps(ramp_, ramp_b_), skipped when the parameters are those they were set with.
+  void configure_own_ramps();
   /// status_flags() with ramps that have the parameters as they stand now (configure_ramps()).
   dsp408::StatusFlags status_flags(const dsp408::CommandValueRamp& ra, const dsp408::CommandValueRamp& rb) const;
   void open_loop(std::int8_t m, std::int8_t op, bool active, double dt, double& a, double& b);
@@ -81,6 +88,8 @@ class DsvSignalChain {
   Parameters par_;
 
   dsp408::CommandValueRamp ramp_, ramp_b_;  // ramp_b_: set point B in mode of operation 3
+  RampParameters ramps_configured_with_{};
+  bool ramps_configured_ = false;
   dsp408::RateLimiter limiter_;
   dsp408::PidController pid_;
   dsp408::Dither dither_;
