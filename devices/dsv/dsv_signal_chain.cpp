@@ -22,6 +22,10 @@ DsvSignalChain::DsvSignalChain(DsvParameters& parameters, ActualValueInput& inpu
   loops_[0] = loop_objects(mode::kVprcClosed, od);
   loops_[1] = loop_objects(mode::kDsc, od);
   loops_[2] = loop_objects(mode::kDpc, od);
+  for (int i = 0; i < 3; ++i) {
+    measured_[2 * i] = loops_[i].actual;
+    measured_[2 * i + 1] = loops_[i].deviation;
+  }
   auto e = [this](std::uint16_t index) { return p_.bind_value(index); };
   par_ = {e(0x6300), e(0x6B00), e(0x6380), e(0x6B80), e(0x6480), e(0x62F0), e(0x2043),
           e(0x2044), e(0x2045), e(0x2046), e(0x2047), e(0x2048), e(0x22B2), e(0x22B3)};
@@ -154,7 +158,8 @@ void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::Comman
 void DsvSignalChain::configure_own_ramps() {
   // Nothing else configures ramp_ and ramp_b_: with the parameters as last time they are set.
   const RampParameters r = ramp_parameters();
-  if (ramps_configured_ && r == ramps_configured_with_) return;
+  const RampParameters& was = ramps_configured_with_;
+  if (ramps_configured_ && r[0] == was[0] && r[1] == was[1] && r[2] == was[2] && r[3] == was[3] && r[4] == was[4]) return;
   configure_ramps(ramp_, ramp_b_, r);
   ramps_configured_with_ = r;
   ramps_configured_ = true;
@@ -165,11 +170,11 @@ void DsvSignalChain::open_loop(std::int8_t m, std::int8_t op, bool active, doubl
   switch (m) {
     case mode::kVpoc:
       w = static_cast<double>(value(par_.vpoc_a)) / 16384.0;
-      wb = static_cast<double>(value(par_.vpoc_b)) / 16384.0;
+      if (op == 3) wb = static_cast<double>(value(par_.vpoc_b)) / 16384.0;  // set point B acts in op-mode 3 only
       break;
     case mode::kVprcOpen:
       w = static_cast<double>(value(par_.vprc_a)) / 16384.0;
-      wb = static_cast<double>(value(par_.vprc_b)) / 16384.0;
+      if (op == 3) wb = static_cast<double>(value(par_.vprc_b)) / 16384.0;
       break;
     case mode::kDcol: w = static_cast<double>(value(par_.dcol)) / 100000.0; break;
     default: break;
@@ -271,19 +276,19 @@ void DsvSignalChain::closed_loop(std::int8_t m, bool active, sim::Time now, doub
 
 void DsvSignalChain::publish_measurements() {
   const std::int8_t m = p_.control_mode();
+  const int on = m == mode::kVprcClosed ? 0 : m == mode::kDsc ? 1 : m == mode::kDpc ? 2 : -1;
   for (int i = 0; i < 3; ++i) {
-    const std::int8_t lm = i == 0 ? mode::kVprcClosed : i == 1 ? mode::kDsc : mode::kDpc;
-    if (lm != m) {  // the objects of the other modes read 0
-      dsp408::put(*loops_[i].actual, 0);
-      dsp408::put(*loops_[i].deviation, 0);
-      continue;
+    if (i != on) {  // the objects of the other modes read 0
+      dsp408::put(*measured_[2 * i], 0);
+      dsp408::put(*measured_[2 * i + 1], 0);
     }
-    const double lim = i == 0 ? 32767.0 : 2147483647.0;
-    const double x = input_.value(lm);
-    const double w = loops_[i].setpoint->as<double>();
-    dsp408::put_rounded(*loops_[i].actual, x, -lim - 1, lim);
-    dsp408::put_rounded(*loops_[i].deviation, w - x, -lim - 1, lim);
   }
+  if (on < 0) return;
+  const double lim = on == 0 ? 32767.0 : 2147483647.0;
+  const double x = input_.value(m);
+  const double w = loops_[on].setpoint->as<double>();
+  dsp408::put_rounded(*loops_[on].actual, x, -lim - 1, lim);
+  dsp408::put_rounded(*loops_[on].deviation, w - x, -lim - 1, lim);
 }
 
 dsp408::StatusFlags DsvSignalChain::status_flags() const {

@@ -85,6 +85,7 @@ class DsvSignalChain {
   dsp408::ChannelControl& control_;
   const DsvOptions& o_;
   LoopObjects loops_[3];  // modes 4, 7, 9
+  canopen::OdEntry* measured_[6] = {};  // actual and deviation of each loop (publish_measurements)
   Parameters par_;
 
   dsp408::CommandValueRamp ramp_, ramp_b_;  // ramp_b_: set point B in mode of operation 3
@@ -96,7 +97,7 @@ class DsvSignalChain {
   dsp408::DeviceState before_fault_ = dsp408::DeviceState::Init;  ///< state that TR_8 left
   double hold_w_ = 0;
   double last_w_ = 0, last_x_ = 0, last_e_ = 0;
-  double target_ = 0, target_b_ = 0;  // ramp targets (for "ramp running")
+  double target_ = 0, target_b_ = 0;  // ramp targets (for "ramp running"); target_b_ in op-mode 3 only
   bool window_reached_ = false, trailing_ = false, solenoid_off_ = false;
   sim::Time in_window_since_{}, out_of_trailing_since_{}, in_off_window_since_{};
   bool in_window_ = false, out_of_trailing_ = false, in_off_window_ = false;

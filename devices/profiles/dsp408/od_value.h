@@ -28,17 +28,18 @@ class IntegerParameter {
  public:
   IntegerParameter() = default;
   explicit IntegerParameter(const canopen::OdEntry* e)
-      : e_(e), signed_(e && canopen::is_signed_integer(e->type)), integer_(e && !canopen::is_real(e->type)) {}
+      : e_(e),
+        signed_(e && canopen::is_signed_integer(e->type)),
+        direct_(e && !canopen::is_real(e->type) && std::endian::native == std::endian::little) {}
 
   explicit operator bool() const { return e_ != nullptr; }
   const canopen::OdEntry* entry() const { return e_; }
 
   /// The value as OdEntry::as<std::int64_t>() gives it; 0 when unbound.
   std::int64_t get() const {
-    if (!e_) return 0;
-    if constexpr (std::endian::native == std::endian::little) {
-      const canopen::Bytes& v = e_->value;
-      if (integer_) [[likely]] {
+    if (direct_) [[likely]] {
+      if constexpr (std::endian::native == std::endian::little) {
+        const canopen::Bytes& v = e_->value;
         switch (v.size()) {
           case 1: return signed_ ? std::int64_t{static_cast<std::int8_t>(v[0])} : std::int64_t{v[0]};
           case 2: {
@@ -55,13 +56,13 @@ class IntegerParameter {
         }
       }
     }
-    return e_->as<std::int64_t>();
+    return e_ ? e_->as<std::int64_t>() : 0;
   }
 
  private:
   const canopen::OdEntry* e_ = nullptr;
   bool signed_ = false;
-  bool integer_ = false;
+  bool direct_ = false;  // bound, an integer type, little-endian host: the loads above apply
 };
 
 /// put_rounded() for an output published every cycle whose value moves slowly (a temperature):
