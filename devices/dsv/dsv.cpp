@@ -1,5 +1,7 @@
 #include "devices/dsv/dsv.h"
 
+#include <array>
+#include <bit>
 #include <cmath>
 
 #include "devices/canopen/pdo_service.h"
@@ -271,8 +273,8 @@ void Dsv::detect_errors() {
   const bool eeprom = faults_.resolution_update_failure;
   // Passing a condition as it was passed last time changes nothing (no edge): only a change, or
   // the first cycle after the errors were cleared (application reset), needs DeviceErrors.
-  const unsigned now = solenoid_a | solenoid_b << 1 | over_current << 2 | supply_low << 3 | control_voltage_low << 4 |
-                       general << 5 | eeprom << 6;
+  const auto now = std::bit_cast<std::uint64_t>(
+      std::array<bool, 8>{solenoid_a, solenoid_b, over_current, supply_low, control_voltage_low, general, eeprom, false});
   if (now == conditions_passed_) return;
   conditions_passed_ = now;
   e.set_condition(kSolenoidA, kRegCurrent, solenoid_a);

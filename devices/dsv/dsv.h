@@ -16,6 +16,7 @@
 // `--set actual=…` sets actual_value.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -65,7 +66,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
 
   void install_device_hooks();
   void detect_errors();
-  static constexpr unsigned kNoConditionsPassed = ~0u;
+  static constexpr std::uint64_t kNoConditionsPassed = ~std::uint64_t{0};  // no bool array is all ones
   void restore_mapping_entry();
   void restore_alias_entry();
 
@@ -93,7 +94,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
     bool over_current = false, supply_low = false, general_error = false, memory_failure = false;
     bool resolution_update_failure = false, actual_cable_break = false, paso_control = false;
   } faults_;
-  unsigned conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on (bits)
+  std::uint64_t conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on
 };
 
 }  // namespace dsv

@@ -1,5 +1,7 @@
 #include "devices/md2/md2.h"
 
+#include <array>
+#include <bit>
 #include <cmath>
 
 #include "devices/canopen/pdo_service.h"
@@ -95,7 +97,8 @@ void Md2::detect_errors() {
   const bool general = faults_.general_error;
   // Passing a condition as it was passed last time changes nothing (no edge): only a change, or
   // the first cycle after the errors were cleared (application reset), needs DeviceErrors.
-  const unsigned now = solenoid_1 | solenoid_2 << 1 | supply_low << 2 | control_voltage_low << 3 | general << 4;
+  const auto now = std::bit_cast<std::uint64_t>(
+      std::array<bool, 8>{solenoid_1, solenoid_2, supply_low, control_voltage_low, general, false, false, false});
   if (now == conditions_passed_) return;
   conditions_passed_ = now;
   auto& e = errors();

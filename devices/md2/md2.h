@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -57,7 +58,7 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
   void process(sim::Time now, sim::Duration dt) override;
 
   void detect_errors();
-  static constexpr unsigned kNoConditionsPassed = ~0u;
+  static constexpr std::uint64_t kNoConditionsPassed = ~std::uint64_t{0};  // no bool array is all ones
 
   Md2Options options_;
   std::unique_ptr<canopen::Node> node_owner_;
@@ -75,7 +76,7 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
     bool supply_low = false, analog_signal_lost = false, general_error = false;
     bool storage_failure = false, paso_control = false;
   } faults_;
-  unsigned conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on (bits)
+  std::uint64_t conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on
 };
 
 }  // namespace md2

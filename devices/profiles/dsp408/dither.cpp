@@ -22,9 +22,4 @@ double Dither::offset(sim::Time t) const {
   return amplitude_ / 2 * std::sin(2 * std::numbers::pi * phase);
 }
 
-double Dither::apply(double dc, sim::Time t, double limit) const {
-  if (dc <= 0) return 0;
-  return std::clamp(dc + offset(t), 0.0, limit);
-}
-
 }  // namespace dsp408

@@ -25,7 +25,11 @@ class Dither {
   double offset(sim::Time t) const;
   /// DC current plus dither, kept within [0, limit]; a current of 0 stays 0 (no dither on a
   /// switched-off solenoid).
-  double apply(double dc, sim::Time t, double limit) const;
+  double apply(double dc, sim::Time t, double limit) const {
+    if (dc <= 0) return 0;
+    const double v = dc + offset(t);
+    return v < 0.0 ? 0.0 : (limit < v ? limit : v);  // std::clamp(v, 0.0, limit)
+  }
 
  private:
   static std::int64_t milli_hz(double frequency_hz);
