@@ -11,25 +11,33 @@ namespace {
 constexpr double kAdcCounts = 1024;  // 10-bit acquisition (§5.4.1)
 }
 
-void ActualValueInput::sample(double measurand, bool wire_broken) {
-  const double p = std::clamp((measurand - o_.sensor_min) / (o_.sensor_max - o_.sensor_min), 0.0, 1.0);
-  switch (p_.value(0x2200)) {
-    case 0: signal_ = 10.0 * p; break;                   // V
-    case 2: signal_ = wire_broken ? 0 : 20.0 * p; break;  // mA
-    default: signal_ = wire_broken ? 0 : 4.0 + 16.0 * p; break;
+ActualValueInput::ActualValueInput(DsvParameters& parameters, const DsvOptions& options)
+    : p_(parameters),
+      o_(options),
+      signal_type_(parameters.bind_value(0x2200)),
+      cable_break_detection_(parameters.bind_value(0x2201)) {
+  const std::int8_t modes[3] = {mode::kVprcClosed, mode::kDsc, mode::kDpc};
+  for (int i = 0; i < 3; ++i) {
+    const auto s = DsvParameters::scaling_objects(modes[i]);
+    scaling_[i] = {p_.bind_value(s.min_reference), p_.bind_value(s.max_reference), p_.bind_value(s.min_interface),
+                   p_.bind_value(s.max_interface)};
   }
-  if (wire_broken && p_.value(0x2200) == 0) signal_ = 0;
+}
+
+const ActualValueInput::Scaling& ActualValueInput::scaling(std::int8_t m) const {
+  // The objects DsvParameters::scaling_objects(m) names: any mode but 4 and 7 has those of 9.
+  return scaling_[m == mode::kVprcClosed ? 0 : m == mode::kDsc ? 1 : 2];
 }
 
 bool ActualValueInput::cable_break() const {
-  return p_.value(0x2201) == 1 && p_.value(0x2200) == 3 && signal_ < o_.cable_break_ma;
+  return cable_break_detection_.get() == 1 && signal_type() == 3 && signal_ < o_.cable_break_ma;
 }
 
-double ActualValueInput::adc_full_scale() const { return p_.value(0x2200) == 0 ? 10000.0 : 20000.0; }
+double ActualValueInput::adc_full_scale() const { return signal_type() == 0 ? 10000.0 : 20000.0; }
 
 double ActualValueInput::interface_counts_16384(std::int64_t raw) const {
   const double s = static_cast<double>(raw) / 1000.0;  // V or mA
-  switch (p_.value(0x2200)) {
+  switch (signal_type()) {
     case 0: return s / 10.0 * 16384;
     case 2: return s / 20.0 * 16384;
     default: return 3277 + (s - 4.0) * 13107.0 / 16.0;
@@ -39,19 +47,20 @@ double ActualValueInput::interface_counts_16384(std::int64_t raw) const {
 double ActualValueInput::value(std::int8_t m) const {
   if (m == mode::kVprcClosed) {
     double counts;
-    switch (p_.value(0x2200)) {
+    switch (signal_type()) {
       case 0: counts = signal_ / 10.0 * 16384; break;
       case 2: counts = signal_ / 20.0 * 16384; break;
       default: counts = std::floor(3277 + (signal_ - 4.0) * 13107.0 / 16.0 + 0.5); break;
     }
     return std::clamp(std::round(counts), 0.0, 16384.0);
   }
-  const auto s = DsvParameters::scaling_objects(m);
-  const double min_ref = static_cast<double>(p_.value(s.min_reference));
-  const double max_ref = static_cast<double>(p_.value(s.max_reference));
+  const Scaling& s = scaling(m);
+  auto get = [](const dsp408::IntegerParameter& e) { return e.get(); };  // as DsvParameters::value()
+  const double min_ref = static_cast<double>(get(s.min_reference));
+  const double max_ref = static_cast<double>(get(s.max_reference));
   const double fs = adc_full_scale();
-  const double c_min = static_cast<double>(p_.value(s.min_interface)) * kAdcCounts / fs;
-  const double c_max = static_cast<double>(p_.value(s.max_interface)) * kAdcCounts / fs;
+  const double c_min = static_cast<double>(get(s.min_interface)) * kAdcCounts / fs;
+  const double c_max = static_cast<double>(get(s.max_interface)) * kAdcCounts / fs;
   if (c_max <= c_min) return min_ref;  // no interface range configured yet
   const double signal_raw = signal_ * 1000.0;  // mV or µA
   const double count = std::floor(signal_raw * kAdcCounts / fs + 1e-9);  // exact at the steps

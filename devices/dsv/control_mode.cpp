@@ -15,8 +15,6 @@ bool mode_supported(Variant v, std::int8_t m) {
   }
 }
 
-bool is_closed_loop(std::int8_t m) { return m == mode::kVprcClosed || m == mode::kDsc || m == mode::kDpc; }
-
 std::uint32_t default_capability(Variant v) {
   // Amplifier: proportional valve, spool open loop, pressure open loop (bits 24, 25, 27);
   // controller: proportional valve, pressure closed loop (24, 28). A-47.

@@ -30,7 +30,7 @@ constexpr ModeSet kAllModes = modes({0, 1, 3, 4, 6, 7, 9});
 constexpr bool in(ModeSet s, std::int8_t m) { return m >= 0 && m < 16 && (s >> m) & 1u; }
 
 bool mode_supported(Variant v, std::int8_t m);
-bool is_closed_loop(std::int8_t m);
+constexpr bool is_closed_loop(std::int8_t m) { return m == mode::kVprcClosed || m == mode::kDsc || m == mode::kDpc; }
 std::uint32_t default_capability(Variant v);
 
 }  // namespace dsv

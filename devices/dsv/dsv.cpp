@@ -1,5 +1,7 @@
 #include "devices/dsv/dsv.h"
 
+#include <array>
+#include <bit>
 #include <cmath>
 
 #include "devices/canopen/pdo_service.h"
@@ -136,6 +138,7 @@ void Dsv::install_device_hooks() {
     return SdoAbort::None;
   });
   temperature_entry_ = od.entry(0x2002, 0);
+  temperature_out_ = dsp408::RoundedOutput(temperature_entry_, -55, 150);
   od.add_read_hook(0x2002, 0, [this](OdEntry& e, Origin) {
     dsp408::put_rounded(e, temperature_, -55, 150);
     return SdoAbort::None;
@@ -194,6 +197,7 @@ void Dsv::power_on(sim::Time now) {
 }
 
 void Dsv::reset_model() {
+  conditions_passed_ = kNoConditionsPassed;  // the errors were cleared: detect afresh
   chain_->reset();
   open_a_detected_ = open_b_detected_ = false;
   if (curve_restore_pending_) {
@@ -260,13 +264,26 @@ void Dsv::detect_errors() {
   // the wire is whole again (a fault reset meanwhile is refused).
   open_a_detected_ = faults_.solenoid_a_open && (open_a_detected_ || chain_->commanded_a() > 0);
   open_b_detected_ = faults_.solenoid_b_open && (open_b_detected_ || chain_->commanded_b() > 0);
-  e.set_condition(kSolenoidA, kRegCurrent, faults_.solenoid_a_short || open_a_detected_);
-  e.set_condition(kSolenoidB, kRegCurrent, options_.solenoids == 2 && (faults_.solenoid_b_short || open_b_detected_));
-  e.set_condition(kOutputCurrent, kRegCurrent, faults_.over_current);
-  e.set_condition(kSupplyLow, kRegVoltage, faults_.supply_low || supply_voltage_ < options_.supply_min);
-  e.set_condition(kControlVoltageLow, kRegVoltage, is_closed_loop(parameters_->control_mode()) && input_->cable_break());
-  e.set_condition(kGeneral, kRegGeneric, faults_.general_error);
-  e.set_condition(kEeprom, kRegGeneric, faults_.resolution_update_failure);
+  const bool solenoid_a = faults_.solenoid_a_short || open_a_detected_;
+  const bool solenoid_b = options_.solenoids == 2 && (faults_.solenoid_b_short || open_b_detected_);
+  const bool over_current = faults_.over_current;
+  const bool supply_low = faults_.supply_low || supply_voltage_ < options_.supply_min;
+  const bool control_voltage_low = is_closed_loop(parameters_->control_mode()) && input_->cable_break();
+  const bool general = faults_.general_error;
+  const bool eeprom = faults_.resolution_update_failure;
+  // Passing a condition as it was passed last time changes nothing (no edge): only a change, or
+  // the first cycle after the errors were cleared (application reset), needs DeviceErrors.
+  const auto now = std::bit_cast<std::uint64_t>(
+      std::array<bool, 8>{solenoid_a, solenoid_b, over_current, supply_low, control_voltage_low, general, eeprom, false});
+  if (now == conditions_passed_) return;
+  conditions_passed_ = now;
+  e.set_condition(kSolenoidA, kRegCurrent, solenoid_a);
+  e.set_condition(kSolenoidB, kRegCurrent, solenoid_b);
+  e.set_condition(kOutputCurrent, kRegCurrent, over_current);
+  e.set_condition(kSupplyLow, kRegVoltage, supply_low);
+  e.set_condition(kControlVoltageLow, kRegVoltage, control_voltage_low);
+  e.set_condition(kGeneral, kRegGeneric, general);
+  e.set_condition(kEeprom, kRegGeneric, eeprom);
 }
 
 void Dsv::process(sim::Time now, sim::Duration dt) {
@@ -281,7 +298,7 @@ void Dsv::process(sim::Time now, sim::Duration dt) {
   solenoid_b_ = outputs_allowed() ? chain_->solenoid_b() : 0.0;
   const double target = options_.ambient_temperature + options_.thermal_gain * (solenoid_a_ * solenoid_a_ + solenoid_b_ * solenoid_b_);
   temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
-  dsp408::put_rounded(*temperature_entry_, temperature_, -55, 150);
+  temperature_out_.put(temperature_);
   restore_mapping_entry();
   restore_alias_entry();
 }

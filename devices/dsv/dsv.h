@@ -16,6 +16,7 @@
 // `--set actual=…` sets actual_value.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -27,6 +28,7 @@
 #include "devices/dsv/dsv_parameters.h"
 #include "devices/dsv/dsv_signal_chain.h"
 #include "devices/profiles/dsp408/channel_control.h"
+#include "devices/profiles/dsp408/od_value.h"
 #include "devices/profiles/wandfluh/valve_application.h"
 
 namespace dsv {
@@ -64,6 +66,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
 
   void install_device_hooks();
   void detect_errors();
+  static constexpr std::uint64_t kNoConditionsPassed = ~std::uint64_t{0};  // no bool array is all ones
   void restore_mapping_entry();
   void restore_alias_entry();
 
@@ -74,6 +77,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
   std::unique_ptr<ActualValueInput> input_;
   std::unique_ptr<DsvSignalChain> chain_;
   canopen::OdEntry* temperature_entry_ = nullptr;
+  dsp408::RoundedOutput temperature_out_;  // 0x2002, published every cycle
 
   int active_rpdo_ = 1, active_tpdo_ = 1;
   std::int8_t mapping_mode_ = 0;     ///< control mode the PDO set was generated for
@@ -90,6 +94,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
     bool over_current = false, supply_low = false, general_error = false, memory_failure = false;
     bool resolution_update_failure = false, actual_cable_break = false, paso_control = false;
   } faults_;
+  std::uint64_t conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on
 };
 
 }  // namespace dsv

@@ -30,7 +30,7 @@ DsvParameters::DsvParameters(canopen::ObjectDictionary& od, const DsvOptions& op
       o_(options),
       control_mode_(od, 0x6043, 0),
       mode_of_operation_(od, 0x2042, 0),
-      characteristic_optimisation_(od.entry(0x2344, 1)),
+      characteristic_optimisation_on_(od.entry(0x2344, 1)),
       displayed_unit_(od.entry(0x2202, 0)) {
   for (const auto& spec : application_objects()) (void)value_entry(spec.index);
   install_rules();
@@ -168,7 +168,7 @@ void DsvParameters::install_shared() {
     shared_[static_cast<std::size_t>(spec.shared)].push_back(od_.entry(spec.index, spec.shape == Shape::Record ? 1 : 0));
   }
   for (std::size_t group = 0; group < shared_.size(); ++group)
-    shared_first_[group] = shared_[group].empty() ? nullptr : shared_[group].front();
+    shared_first_[group] = dsp408::IntegerParameter(shared_[group].empty() ? nullptr : shared_[group].front());
   for (std::size_t group = 1; group < shared_.size(); ++group) {
     for (OdEntry* e : shared_[group]) {
       od_.add_observer(e->index, e->sub, [this, group](OdEntry& written, Origin) {
@@ -208,8 +208,6 @@ void DsvParameters::install_characteristic_optimisation(std::uint16_t index) {
   od_.after_write<std::uint16_t>(index, 4, [point](std::uint16_t v, Origin) { point().x = v / 100.0; });
   od_.after_write<std::uint16_t>(index, 5, [point](std::uint16_t v, Origin) { point().y = v / 1000.0; });
 }
-
-bool DsvParameters::characteristic_on() const { return characteristic_optimisation_->as<std::uint16_t>() == 1; }
 
 void DsvParameters::save_curves(canopen::ParameterStore& memory) const {
   for (std::size_t sol = 0; sol < 2; ++sol) {

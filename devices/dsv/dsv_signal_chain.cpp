@@ -22,7 +22,11 @@ DsvSignalChain::DsvSignalChain(DsvParameters& parameters, ActualValueInput& inpu
   loops_[0] = loop_objects(mode::kVprcClosed, od);
   loops_[1] = loop_objects(mode::kDsc, od);
   loops_[2] = loop_objects(mode::kDpc, od);
-  auto e = [this](std::uint16_t index) { return p_.value_entry(index); };
+  for (int i = 0; i < 3; ++i) {
+    measured_[2 * i] = loops_[i].actual;
+    measured_[2 * i + 1] = loops_[i].deviation;
+  }
+  auto e = [this](std::uint16_t index) { return p_.bind_value(index); };
   par_ = {e(0x6300), e(0x6B00), e(0x6380), e(0x6B80), e(0x6480), e(0x62F0), e(0x2043),
           e(0x2044), e(0x2045), e(0x2046), e(0x2047), e(0x2048), e(0x22B2), e(0x22B3)};
   ramp_.set_full_scale(1.0);
@@ -97,49 +101,80 @@ void DsvSignalChain::on_state_change(DeviceState from, DeviceState to) {
   }
 }
 
-double DsvSignalChain::current(int solenoid, double demand, std::int8_t m, bool closed) const {
+double DsvSignalChain::closed_loop_current(int solenoid, double demand) const {
   const bool a = solenoid == 0;
   dsp408::SolenoidCurve c;
   c.i_min = to_amperes(p_.shared(a ? Shared::IminA : Shared::IminB));
   c.i_max = to_amperes(p_.shared(a ? Shared::ImaxA : Shared::ImaxB));
-  if (closed) {
-    c.falling = value(a ? par_.falling_a : par_.falling_b) == 1;
-    c.imin_at_zero = value(par_.imin_always) == 0;  // "0 = Imin always active yes"
-    return dsp408::solenoid_current(c, demand);
-  }
-  if (p_.shared(Shared::DeadbandType) == 1) {
-    // m6 has threshold A only, used for both sides.
-    const auto thr = (a || m == mode::kDcol) ? p_.shared(Shared::DeadbandA) : p_.shared(Shared::DeadbandB);
-    c.threshold = static_cast<double>(thr) / 32768.0;  // 0..16384 = 0..50 %
-    c.rescale = true;
-  }
-  const bool optimise = (m == mode::kVpoc || m == mode::kVprcOpen) && p_.characteristic_on();
-  return dsp408::solenoid_current(c, demand, optimise ? &p_.curve(solenoid) : nullptr);
+  c.falling = value(a ? par_.falling_a : par_.falling_b) == 1;
+  c.imin_at_zero = value(par_.imin_always) == 0;  // "0 = Imin always active yes"
+  return dsp408::solenoid_current(c, demand);
 }
 
-void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const {
-  const bool on = p_.shared(Shared::RampType) == 3;
-  const auto sec = [this](Shared s) { return static_cast<double>(p_.shared(s)) / 1000.0; };
+void DsvSignalChain::open_loop_currents(std::int8_t m, double a, double b, double& ia, double& ib) {
+  // Each shared parameter read once. A demand of 0 or less is 0 A in open loop (no "Imin always
+  // active" there): nothing to read for it.
+  const bool deadband = p_.shared(Shared::DeadbandType) == 1;
+  const bool optimise = (m == mode::kVpoc || m == mode::kVprcOpen) && p_.characteristic_on();
+  auto side = [&](int solenoid, double demand) {
+    if (demand <= 0) return 0.0;
+    const bool is_a = solenoid == 0;
+    dsp408::SolenoidCurve c;
+    c.i_min = to_amperes(p_.shared(is_a ? Shared::IminA : Shared::IminB));
+    c.i_max = to_amperes(p_.shared(is_a ? Shared::ImaxA : Shared::ImaxB));
+    if (deadband) {
+      // m6 has threshold A only, used for both sides.
+      const auto thr = (is_a || m == mode::kDcol) ? p_.shared(Shared::DeadbandA) : p_.shared(Shared::DeadbandB);
+      c.threshold = static_cast<double>(thr) / 32768.0;  // 0..16384 = 0..50 %
+      c.rescale = true;
+    }
+    return dsp408::solenoid_current(c, demand, optimise ? &p_.curve(solenoid) : nullptr);
+  };
+  ia = side(0, a);
+  ib = o_.solenoids == 2 ? side(1, b) : 0.0;
+}
+
+DsvSignalChain::RampParameters DsvSignalChain::ramp_parameters() const {
+  return {p_.shared(Shared::RampType), p_.shared(Shared::RampAUp), p_.shared(Shared::RampADown), p_.shared(Shared::RampBUp),
+          p_.shared(Shared::RampBDown)};
+}
+
+void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b, const RampParameters& r) {
+  const bool on = r[0] == 3;
+  const auto sec = [](std::int64_t ms) { return static_cast<double>(ms) / 1000.0; };
   a.set_enabled(on);
   b.set_enabled(on);
-  const double a_up = sec(Shared::RampAUp), a_down = sec(Shared::RampADown);
-  const double b_up = sec(Shared::RampBUp), b_down = sec(Shared::RampBDown);
+  const double a_up = sec(r[1]), a_down = sec(r[2]);
+  const double b_up = sec(r[3]), b_down = sec(r[4]);
   a.set_times({a_up, a_down, b_up, b_down});
   // Set point B (op-mode 3) is ramped on its own magnitude with the B times.
   b.set_times({b_up, b_down, b_up, b_down});
 }
 
-void DsvSignalChain::open_loop(std::int8_t m, bool active, double dt, double& a, double& b) {
-  const std::int8_t op = p_.mode_of_operation();
+void DsvSignalChain::configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const {
+  configure_ramps(a, b, ramp_parameters());
+}
+
+void DsvSignalChain::configure_own_ramps() {
+  // Nothing else configures ramp_ and ramp_b_: with the parameters as last time they are set.
+  const RampParameters r = ramp_parameters();
+  const RampParameters& was = ramps_configured_with_;
+  if (ramps_configured_ && r[0] == was[0] && r[1] == was[1] && r[2] == was[2] && r[3] == was[3] && r[4] == was[4]) return;
+  configure_ramps(ramp_, ramp_b_, r);
+  ramps_configured_with_ = r;
+  ramps_configured_ = true;
+}
+
+void DsvSignalChain::open_loop(std::int8_t m, std::int8_t op, bool active, double dt, double& a, double& b) {
   double w = 0, wb = 0;
   switch (m) {
     case mode::kVpoc:
       w = static_cast<double>(value(par_.vpoc_a)) / 16384.0;
-      wb = static_cast<double>(value(par_.vpoc_b)) / 16384.0;
+      if (op == 3) wb = static_cast<double>(value(par_.vpoc_b)) / 16384.0;  // set point B acts in op-mode 3 only
       break;
     case mode::kVprcOpen:
       w = static_cast<double>(value(par_.vprc_a)) / 16384.0;
-      wb = static_cast<double>(value(par_.vprc_b)) / 16384.0;
+      if (op == 3) wb = static_cast<double>(value(par_.vprc_b)) / 16384.0;
       break;
     case mode::kDcol: w = static_cast<double>(value(par_.dcol)) / 100000.0; break;
     default: break;
@@ -149,7 +184,7 @@ void DsvSignalChain::open_loop(std::int8_t m, bool active, double dt, double& a,
     if (op == 2 || (op == 1 && o_.op_mode1_bipolar)) w = -w;
     if (op == 1 && !o_.op_mode1_bipolar) w = 1.0 - w;
   }
-  configure_ramps(ramp_, ramp_b_);
+  configure_own_ramps();
   target_ = op == 3 ? std::clamp(w, 0.0, 1.0) : w;
   target_b_ = std::clamp(wb, 0.0, 1.0);
   if (active) {
@@ -241,26 +276,37 @@ void DsvSignalChain::closed_loop(std::int8_t m, bool active, sim::Time now, doub
 
 void DsvSignalChain::publish_measurements() {
   const std::int8_t m = p_.control_mode();
+  const int on = m == mode::kVprcClosed ? 0 : m == mode::kDsc ? 1 : m == mode::kDpc ? 2 : -1;
   for (int i = 0; i < 3; ++i) {
-    const std::int8_t lm = i == 0 ? mode::kVprcClosed : i == 1 ? mode::kDsc : mode::kDpc;
-    const bool on = lm == m;
-    const double lim = i == 0 ? 32767.0 : 2147483647.0;
-    const double x = on ? input_.value(lm) : 0.0;
-    const double w = on ? loops_[i].setpoint->as<double>() : 0.0;
-    dsp408::put_rounded(*loops_[i].actual, x, -lim - 1, lim);
-    dsp408::put_rounded(*loops_[i].deviation, w - x, -lim - 1, lim);
+    if (i != on) {  // the objects of the other modes read 0
+      dsp408::put(*measured_[2 * i], 0);
+      dsp408::put(*measured_[2 * i + 1], 0);
+    }
   }
+  if (on < 0) return;
+  const double lim = on == 0 ? 32767.0 : 2147483647.0;
+  const double x = input_.value(m);
+  const double w = loops_[on].setpoint->as<double>();
+  dsp408::put_rounded(*loops_[on].actual, x, -lim - 1, lim);
+  dsp408::put_rounded(*loops_[on].deviation, w - x, -lim - 1, lim);
 }
 
 dsp408::StatusFlags DsvSignalChain::status_flags() const {
+  const std::int8_t m = p_.control_mode();
+  const bool ramps_used = control_.state() == DeviceState::Active && (m == mode::kVpoc || m == mode::kVprcOpen || m == mode::kDcol);
+  if (!ramps_used) return status_flags(ramp_, ramp_b_);
+  // Ramps as the parameters stand now: the TPDO answering an RPDO shows the new ramp at once.
+  dsp408::CommandValueRamp ra = ramp_, rb = ramp_b_;
+  configure_ramps(ra, rb);
+  return status_flags(ra, rb);
+}
+
+dsp408::StatusFlags DsvSignalChain::status_flags(const dsp408::CommandValueRamp& ra, const dsp408::CommandValueRamp& rb) const {
   dsp408::StatusFlags f;
   const std::int8_t m = p_.control_mode();
   const DeviceState s = control_.state();
   const bool live = s == DeviceState::Active;
   if (live && (m == mode::kVpoc || m == mode::kVprcOpen || m == mode::kDcol)) {
-    // Ramps as the parameters stand now: the TPDO answering an RPDO shows the new ramp at once.
-    dsp408::CommandValueRamp ra = ramp_, rb = ramp_b_;
-    configure_ramps(ra, rb);
     // The set point may have changed since the last cycle (an RPDO is answered at once).
     const std::int8_t op = p_.mode_of_operation();
     double w = m == mode::kVpoc ? value(par_.vpoc_a) / 16384.0 : m == mode::kVprcOpen ? value(par_.vprc_a) / 16384.0 : value(par_.dcol) / 100000.0;
@@ -289,6 +335,7 @@ dsp408::StatusFlags DsvSignalChain::status_flags() const {
 
 void DsvSignalChain::process(sim::Time now, double dt) {
   const std::int8_t m = p_.control_mode();
+  const std::int8_t op = p_.mode_of_operation();
   const DeviceState s = control_.state();
   const bool active = s == DeviceState::Active;
   const bool hold = s == DeviceState::Hold || s == DeviceState::FaultHold;
@@ -308,13 +355,12 @@ void DsvSignalChain::process(sim::Time now, double dt) {
     bool off = false;
     if (is_closed_loop(m)) {
       closed_loop(m, active, now, dt, a, b, off);
-      ia = current(0, a, m, true);
-      ib = o_.solenoids == 2 ? current(1, b, m, true) : 0.0;
+      ia = closed_loop_current(0, a);
+      ib = o_.solenoids == 2 ? closed_loop_current(1, b) : 0.0;
       if (off) ia = ib = 0;
     } else if (m != mode::kLocal) {
-      open_loop(m, active, dt, a, b);
-      ia = current(0, a, m, false);
-      ib = o_.solenoids == 2 ? current(1, b, m, false) : 0.0;
+      open_loop(m, op, active, dt, a, b);
+      open_loop_currents(m, a, b, ia, ib);
     }
   } else {
     ramp_.reset(0);
@@ -335,7 +381,30 @@ void DsvSignalChain::process(sim::Time now, double dt) {
   out_a_ = driver_ok_a_ ? dither_.apply(ia, now, fs) : 0.0;
   out_b_ = driver_ok_b_ ? dither_.apply(ib, now, fs) : 0.0;
   publish_measurements();
-  control_.publish_status();
+
+  // The flags status_flags() would find now, from what this cycle computed: in ACTIVE with an
+  // open-loop mode, open_loop() has just configured the ramps with the parameters as they stand
+  // and its targets are the set points status_flags() derives (but set point B of mode 6, which
+  // open_loop() does not use).
+  dsp408::StatusFlags f;
+  const bool open_mode = m == mode::kVpoc || m == mode::kVprcOpen || m == mode::kDcol;
+  if (active && open_mode) {
+    f.ramp_running = ramp_.running(target_);
+    if (op == 3) {
+      const double wb = m == mode::kDcol ? std::clamp(value(par_.vprc_b) / 16384.0, 0.0, 1.0) : target_b_;
+      f.ramp_running = f.ramp_running || ramp_b_.running(wb);
+    }
+    if (op == 3) {
+      const std::uint16_t cw = control_.dsm().control_word();
+      f.solenoid_a_released = cw & dsp408::control::kReleaseSolenoidA;
+      f.solenoid_b_released = cw & dsp408::control::kReleaseSolenoidB;
+    }
+  }
+  if (is_closed_loop(m) && (active || s == DeviceState::Hold)) {
+    f.window_reached = window_reached_;
+    f.warning = trailing_;
+  }
+  control_.publish_status(f);
 }
 
 }  // namespace dsv

@@ -8,6 +8,7 @@
 // gated by the device state (ACTIVE live, HOLD frozen, INIT/DISABLED off, FAULT per 2043h).
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "devices/dsv/actual_value_input.h"
@@ -51,38 +52,52 @@ class DsvSignalChain {
         *integrator_type, *target_type, *target_threshold, *target_delay, *trailing_type, *trailing_threshold,
         *trailing_delay, *off_threshold, *off_delay, *min_reference, *max_reference;
   };
-  /// Parameters read every cycle (DsvParameters::value_entry, bound once; null when absent).
+  /// Parameters read every cycle (DsvParameters::bind_value, bound once; unbound when absent).
   struct Parameters {
-    const canopen::OdEntry *vpoc_a, *vpoc_b, *vprc_a, *vprc_b, *dcol, *inversion, *error_handling, *system_inverted,
-        *falling_a, *falling_b, *imin_always, *solenoid_off_disabled, *speed_pos, *speed_neg;
+    dsp408::IntegerParameter vpoc_a, vpoc_b, vprc_a, vprc_b, dcol, inversion, error_handling, system_inverted, falling_a,
+        falling_b, imin_always, solenoid_off_disabled, speed_pos, speed_neg;
   };
+  static std::int64_t value(const dsp408::IntegerParameter& e) { return e.get(); }
   static std::int64_t value(const canopen::OdEntry* e) { return e ? e->as<std::int64_t>() : 0; }
   LoopObjects loop_objects(std::int8_t m, canopen::ObjectDictionary& od);
   template <typename E>
   static LoopObjects loop_objects_of(std::int8_t m, E e);
   const LoopObjects* loop(std::int8_t m) const;
 
+  /// Ramp type and the A up, A down, B up, B down times (shared parameters).
+  using RampParameters = std::array<std::int64_t, 5>;
+  RampParameters ramp_parameters() const;
+  static void configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b, const RampParameters& r);
   void configure_ramps(dsp408::CommandValueRamp& a, dsp408::CommandValueRamp& b) const;
-  void open_loop(std::int8_t m, bool active, double dt, double& a, double& b);
+  /// configure_ramps(ramp_, ramp_b_), skipped when the parameters are those they were set with.
+  void configure_own_ramps();
+  /// status_flags() with ramps that have the parameters as they stand now (configure_ramps()).
+  dsp408::StatusFlags status_flags(const dsp408::CommandValueRamp& ra, const dsp408::CommandValueRamp& rb) const;
+  void open_loop(std::int8_t m, std::int8_t op, bool active, double dt, double& a, double& b);
   void closed_loop(std::int8_t m, bool active, sim::Time now, double dt, double& a, double& b, bool& off);
   double to_amperes(std::int64_t counts) const { return static_cast<double>(counts) * o_.current_full_scale() / 16384.0; }
-  double current(int solenoid, double demand, std::int8_t m, bool closed) const;
+  double closed_loop_current(int solenoid, double demand) const;
+  /// Open-loop currents of both solenoids in mode `m` for demands a and b.
+  void open_loop_currents(std::int8_t m, double a, double b, double& ia, double& ib);
 
   DsvParameters& p_;
   ActualValueInput& input_;
   dsp408::ChannelControl& control_;
   const DsvOptions& o_;
   LoopObjects loops_[3];  // modes 4, 7, 9
+  canopen::OdEntry* measured_[6] = {};  // actual and deviation of each loop (publish_measurements)
   Parameters par_;
 
   dsp408::CommandValueRamp ramp_, ramp_b_;  // ramp_b_: set point B in mode of operation 3
+  RampParameters ramps_configured_with_{};
+  bool ramps_configured_ = false;
   dsp408::RateLimiter limiter_;
   dsp408::PidController pid_;
   dsp408::Dither dither_;
   dsp408::DeviceState before_fault_ = dsp408::DeviceState::Init;  ///< state that TR_8 left
   double hold_w_ = 0;
   double last_w_ = 0, last_x_ = 0, last_e_ = 0;
-  double target_ = 0, target_b_ = 0;  // ramp targets (for "ramp running")
+  double target_ = 0, target_b_ = 0;  // ramp targets (for "ramp running"); target_b_ in op-mode 3 only
   bool window_reached_ = false, trailing_ = false, solenoid_off_ = false;
   sim::Time in_window_since_{}, out_of_trailing_since_{}, in_off_window_since_{};
   bool in_window_ = false, out_of_trailing_ = false, in_off_window_ = false;

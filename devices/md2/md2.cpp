@@ -1,5 +1,7 @@
 #include "devices/md2/md2.h"
 
+#include <array>
+#include <bit>
 #include <cmath>
 
 #include "devices/canopen/pdo_service.h"
@@ -47,6 +49,7 @@ Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
     channels_.push_back(std::make_unique<Md2Channel>(n.od(), options_, c));
   }
   temperature_entry_ = n.od().entry(0x2002, 0);
+  temperature_out_ = dsp408::RoundedOutput(temperature_entry_, -55, 150);
   n.od().add_read_hook(0x2002, 0, [this](canopen::OdEntry& e, canopen::Origin) {
     dsp408::put_rounded(e, temperature_, -55, 150);
     return canopen::SdoAbort::None;
@@ -62,6 +65,7 @@ Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
 }
 
 void Md2::reset_model() {
+  conditions_passed_ = kNoConditionsPassed;  // the errors were cleared: detect afresh
   for (auto& ch : channels_) ch->reset_model();
   temperature_ = options_.ambient_temperature;
 }
@@ -86,13 +90,23 @@ void Md2::regenerate_pdos() {
 }
 
 void Md2::detect_errors() {
+  const bool solenoid_1 = faults_.solenoid_a_open || faults_.solenoid_a_short;
+  const bool solenoid_2 = options_.solenoids == 2 && (faults_.solenoid_b_open || faults_.solenoid_b_short);
+  const bool supply_low = faults_.supply_low || supply_voltage_ < options_.supply_min;
+  const bool control_voltage_low = faults_.analog_signal_lost && channels_[0]->uses_analog_input();
+  const bool general = faults_.general_error;
+  // Passing a condition as it was passed last time changes nothing (no edge): only a change, or
+  // the first cycle after the errors were cleared (application reset), needs DeviceErrors.
+  const auto now = std::bit_cast<std::uint64_t>(
+      std::array<bool, 8>{solenoid_1, solenoid_2, supply_low, control_voltage_low, general, false, false, false});
+  if (now == conditions_passed_) return;
+  conditions_passed_ = now;
   auto& e = errors();
-  e.set_condition(kSolenoid1, kRegCurrent, faults_.solenoid_a_open || faults_.solenoid_a_short);
-  e.set_condition(kSolenoid2, kRegCurrent,
-                  options_.solenoids == 2 && (faults_.solenoid_b_open || faults_.solenoid_b_short));
-  e.set_condition(kSupplyLow, kRegVoltage, faults_.supply_low || supply_voltage_ < options_.supply_min);
-  e.set_condition(kControlVoltageLow, kRegVoltage, faults_.analog_signal_lost && channels_[0]->uses_analog_input());
-  e.set_condition(kGeneral, kRegGeneric, faults_.general_error);
+  e.set_condition(kSolenoid1, kRegCurrent, solenoid_1);
+  e.set_condition(kSolenoid2, kRegCurrent, solenoid_2);
+  e.set_condition(kSupplyLow, kRegVoltage, supply_low);
+  e.set_condition(kControlVoltageLow, kRegVoltage, control_voltage_low);
+  e.set_condition(kGeneral, kRegGeneric, general);
 }
 
 void Md2::process(sim::Time now, sim::Duration dt) {
@@ -112,7 +126,7 @@ void Md2::process(sim::Time now, sim::Duration dt) {
   const double target = options_.ambient_temperature +
                         options_.thermal_gain * (ch1.solenoid_a * ch1.solenoid_a + ch1.solenoid_b * ch1.solenoid_b);
   temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
-  dsp408::put_rounded(*temperature_entry_, temperature_, -55, 150);
+  temperature_out_.put(temperature_);
 }
 
 sim::PortList Md2::ports() {

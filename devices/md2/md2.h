@@ -15,6 +15,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "devices/device.h"
 #include "devices/md2/md2_channel.h"
 #include "devices/md2/md2_options.h"
+#include "devices/profiles/dsp408/od_value.h"
 #include "devices/profiles/wandfluh/valve_application.h"
 
 namespace md2 {
@@ -61,11 +63,13 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
   void process(sim::Time now, sim::Duration dt) override;
 
   void detect_errors();
+  static constexpr std::uint64_t kNoConditionsPassed = ~std::uint64_t{0};  // no bool array is all ones
 
   Md2Options options_;
   std::unique_ptr<canopen::Node> node_owner_;
   std::vector<std::unique_ptr<Md2Channel>> channels_;
   canopen::OdEntry* temperature_entry_ = nullptr;
+  dsp408::RoundedOutput temperature_out_;  // 0x2002, published every cycle
 
   // Inputs and fault conditions.
   double enable_input_ = 1;
@@ -77,6 +81,7 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
     bool supply_low = false, analog_signal_lost = false, general_error = false;
     bool storage_failure = false, paso_control = false;
   } faults_;
+  std::uint64_t conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on
 };
 
 }  // namespace md2

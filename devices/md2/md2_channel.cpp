@@ -88,6 +88,7 @@ void Md2Channel::reset_model() {
   pid_.reset();
   n_point_.reset();
   hold_setpoint_ = effective_ = 0;
+  at_rest_ = true;
   solenoid_a = solenoid_b = 0;
   control_.dsm().set_active_allowed(control_mode() != mode::kNone);
   publish_measurements();
@@ -131,8 +132,9 @@ double Md2Channel::setpoint_raw() const {
 }
 
 double Md2Channel::actual_raw() const {
+  if (!actual_mode_) return 0;  // no feedback on this channel (amplifier, channels 5..8)
   const std::int8_t m = control_mode();
-  if (!is_closed_loop(m) || !actual_mode_) return 0;
+  if (!is_closed_loop(m)) return 0;
   if (actual_mode_.get() == 1) {  // actual value via CAN
     return is_16_bit(m) ? actual_in_16_->as<double>() : actual_in_32_->as<double>();
   }
@@ -141,15 +143,18 @@ double Md2Channel::actual_raw() const {
 }
 
 dsp408::StatusFlags Md2Channel::status_flags() const {
-  dsp408::StatusFlags f;
-  const std::int8_t m = control_mode();
   const DeviceState s = control_.state();
+  return status_flags(control_mode(), s, s == DeviceState::Active ? setpoint_raw() : 0.0);
+}
+
+dsp408::StatusFlags Md2Channel::status_flags(std::int8_t m, DeviceState s, double live_setpoint) const {
+  dsp408::StatusFlags f;
   if (s == DeviceState::Active && ramp_mode(m)) {
     const double n = o_.bus_full_scale;
-    f.ramp_running = ramp_.running(std::clamp(setpoint_raw(), -n, n));
+    f.ramp_running = ramp_.running(std::clamp(live_setpoint, -n, n));
   }
   if ((m == mode::kVprcClosed || m == mode::kDsc || m == mode::kDpc) && (s == DeviceState::Active || s == DeviceState::Hold)) {
-    const double w = s == DeviceState::Hold ? hold_setpoint_ : setpoint_raw();
+    const double w = s == DeviceState::Hold ? hold_setpoint_ : live_setpoint;
     double window = o_.window;
     if (!is_16_bit(m)) window = o_.window_scaled > 0 ? o_.window_scaled : 0.01 * span(m);
     f.window_reached = std::abs(w - last_actual_) <= window;
@@ -160,9 +165,9 @@ dsp408::StatusFlags Md2Channel::status_flags() const {
 void Md2Channel::publish_measurements() {
   if (!actuals_[0]) return;
   const std::int8_t m = control_mode();
-  const DeviceState s = control_.state();
-  const double w = s == DeviceState::Hold ? hold_setpoint_ : setpoint_raw();
   const int active = (m == mode::kVprcClosed || m == mode::kVprcClosed2) ? 0 : m == mode::kDsc ? 1 : m == mode::kDpc ? 2 : -1;
+  // The set point only matters for the deviation of the active loop (setpoint_raw() is pure).
+  const double w = active < 0 ? 0.0 : control_.state() == DeviceState::Hold ? hold_setpoint_ : setpoint_raw();
   for (int i = 0; i < 3; ++i) {
     const bool on = i == active;
     const double lim = i == 0 ? 32767.0 : 2147483647.0;
@@ -171,28 +176,23 @@ void Md2Channel::publish_measurements() {
   }
 }
 
-void Md2Channel::process(sim::Time now, double dt) {
+void Md2Channel::reset_functions() {
+  ramp_.reset(0);
+  pid_.reset();
+  n_point_.reset();
+  effective_ = 0;
+  at_rest_ = true;
+}
+
+void Md2Channel::process_live(sim::Time now, double dt, DeviceState s) {
   const std::int8_t m = control_mode();
-  const DeviceState s = control_.state();
   const double n = o_.bus_full_scale;
   last_actual_ = actual_raw();
-
   const bool active = s == DeviceState::Active;
-  const bool hold = s == DeviceState::Hold || s == DeviceState::FaultHold;
-  if (!active && !hold) {
-    // INIT, DISABLED, FAULT, NOT_READY: functions disabled, solenoids 0 A.
-    ramp_.reset(0);
-    limiter_.reset(last_actual_);
-    pid_.reset();
-    n_point_.reset();
-    effective_ = 0;
-    solenoid_a = solenoid_b = 0;
-    publish_measurements();
-    control_.publish_status();
-    return;
-  }
+  at_rest_ = false;
+  double w = 0;  // the live set point (ACTIVE only; setpoint_raw() is pure)
   if (active) {
-    const double w = setpoint_raw();  // pure: read only where a live state uses it
+    w = setpoint_raw();
     if (ramp_mode(m)) {
       effective_ = ramp_.step(std::clamp(w, -n, n), dt);
     } else if (speed_mode(m) && speed_pos_) {
@@ -252,7 +252,7 @@ void Md2Channel::process(sim::Time now, double dt) {
   solenoid_a = driver_ok_a_ && ia > 0 ? std::clamp(ia + d * o_.i_max_a, 0.0, o_.i_limit) : 0.0;
   solenoid_b = driver_ok_b_ && ib > 0 ? std::clamp(ib + d * o_.i_max_b, 0.0, o_.i_limit) : 0.0;
   publish_measurements();
-  control_.publish_status();
+  control_.publish_status(status_flags(m, s, w));  // as status_flags() would find them now
 }
 
 }  // namespace md2

@@ -34,8 +34,16 @@ class Md2Channel {
 
   /// Application reset: ramps, controllers and outputs back to rest.
   void reset_model();
-  /// One control cycle.
-  void process(sim::Time now, double dt);
+  /// One control cycle. Most channels of an MD2 idle (INIT, DISABLED, FAULT, NOT_READY): that
+  /// cycle is inline and short.
+  void process(sim::Time now, double dt) {
+    const dsp408::DeviceState s = control_.state();
+    if (s == dsp408::DeviceState::Active || s == dsp408::DeviceState::Hold || s == dsp408::DeviceState::FaultHold) {
+      process_live(now, dt, s);
+    } else {
+      rest();
+    }
+  }
 
   /// Solenoid driver usable (false while open-circuited: no current flows).
   void set_driver_ok(bool a, bool b) {
@@ -53,12 +61,26 @@ class Md2Channel {
 
  private:
   void install(canopen::ObjectDictionary& od);
+  void process_live(sim::Time now, double dt, dsp408::DeviceState s);
+  /// The cycle outside ACTIVE and HOLD: functions disabled, solenoids 0 A.
+  void rest() {
+    last_actual_ = actual_mode_ ? actual_raw() : 0.0;  // no feedback on this channel: 0
+    if (!at_rest_) reset_functions();
+    limiter_.reset(last_actual_);
+    solenoid_a = solenoid_b = 0;
+    if (actuals_[0]) publish_measurements();
+    control_.publish_status();
+  }
+  /// Ramp, controllers and effective set point to rest (only a live state moves them).
+  void reset_functions();
   void on_state_change(dsp408::DeviceState from, dsp408::DeviceState to);
   double setpoint_raw() const;     ///< the set point of the active mode (bus or local)
   double actual_raw() const;       ///< feedback in the mode's bus unit
   double span(std::int8_t m) const;
   void publish_measurements();
   dsp408::StatusFlags status_flags() const;  ///< all clear outside ACTIVE and HOLD
+  /// The same for mode `m`, state `s` and the live set point (setpoint_raw(), used in ACTIVE).
+  dsp408::StatusFlags status_flags(std::int8_t m, dsp408::DeviceState s, double live_setpoint) const;
   bool ramp_mode(std::int8_t m) const { return m == mode::kVpoc || m == mode::kVprcOpen; }
   bool speed_mode(std::int8_t m) const { return o_.is_speed_mode(m); }
 
@@ -88,6 +110,7 @@ class Md2Channel {
   double effective_ = 0;       ///< set point after ramp / rate limitation
   double last_actual_ = 0;
   bool driver_ok_a_ = true, driver_ok_b_ = true;
+  bool at_rest_ = false;  ///< ramp, controllers and effective set point already reset (idle)
 };
 
 }  // namespace md2

@@ -95,21 +95,6 @@ void ChannelControl::set_paso_control(bool on) {
   publish_status();
 }
 
-std::uint16_t ChannelControl::status_word() const {
-  const DeviceState s = dsm_.state();
-  const bool ask = flags_ && (!flags_live_only_ || s == DeviceState::Active || s == DeviceState::Hold);
-  StatusFlags f = ask ? flags_() : StatusFlags{};
-  f.local = source_ != ControlSource::Bus;
-  return dsp408::status_word(s, f);
-}
-
-void ChannelControl::publish_status() {
-  if (!status_entry_) return;
-  const std::uint16_t w = status_word();
-  if (status_entry_->value.size() == 2 && canopen::decode_unsigned(status_entry_->value) == w) return;
-  put(*status_entry_, w);
-}
-
 devices::ProfileStatus ChannelControl::profile_status() const {
   devices::ProfileStatus s;
   s.profile = devices::ProfileStatus::Profile::Dsp408;

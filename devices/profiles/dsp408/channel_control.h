@@ -58,9 +58,23 @@ class ChannelControl {
     flags_ = std::move(f);
     flags_live_only_ = live_states_only;
   }
-  std::uint16_t status_word() const;
+  std::uint16_t status_word() const {
+    const DeviceState s = dsm_.state();
+    if (flags_ && (!flags_live_only_ || s == DeviceState::Active || s == DeviceState::Hold)) return word_with(flags_());
+    return idle_word(s);
+  }
   /// Refreshes 0x6041 in the dictionary (for change-driven TPDOs); stores only a changed word.
-  void publish_status();
+  void publish_status() {
+    if (status_entry_) store_status(status_word());
+  }
+  /// The same with the product's flags as its control cycle has just computed them (what the
+  /// flags function would return now): the cycle need not have them computed a second time.
+  void publish_status(const StatusFlags& flags) {
+    if (!status_entry_) return;
+    const DeviceState s = dsm_.state();
+    const bool ask = flags_ && (!flags_live_only_ || s == DeviceState::Active || s == DeviceState::Hold);
+    store_status(ask ? word_with(flags) : idle_word(s));
+  }
 
   /// Re-reads 0x604F (after the dictionary was reloaded).
   void refresh_source() { apply_source(); }
@@ -78,6 +92,19 @@ class ChannelControl {
  private:
   void install();
   void apply_source();
+  /// The word with the product's flags (bit 4 from the control source).
+  std::uint16_t word_with(StatusFlags f) const {
+    f.local = source_ != ControlSource::Bus;
+    return dsp408::status_word(dsm_.state(), f);
+  }
+  /// The word of a state in which the product is not asked: state bits and bit 4 only.
+  std::uint16_t idle_word(DeviceState s) const {
+    return static_cast<std::uint16_t>(state_bits(s) | (source_ != ControlSource::Bus ? status::kLocal : 0u));
+  }
+  void store_status(std::uint16_t w) {
+    if (status_entry_->value.size() == 2 && canopen::decode_unsigned(status_entry_->value) == w) return;
+    canopen::encode_unsigned(w, status_entry_->value);
+  }
 
   canopen::ObjectDictionary& od_;
   ChannelObjects objects_;
