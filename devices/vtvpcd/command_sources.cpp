@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "devices/vtvpcd/manufacturer_objects.h"
 #include "devices/vtvpcd/parameter_conversion.h"
 
 namespace vtvpcd {
@@ -12,45 +11,42 @@ constexpr double kMaxPressureBar = 600.0;
 constexpr double kMaxRampS = 300.0;
 constexpr double kMinTiMs = 2.0, kMaxTiMs = 30000.0;
 constexpr double kMaxKp = 255.0;
-
-double eu(const ParameterSource& p, std::uint16_t index, Scale scale) { return to_eu(p.raw(index), scale); }
-std::uint16_t at(std::uint16_t base, int k) { return static_cast<std::uint16_t>(base + k); }
 }  // namespace
 
 PumpLimits limits_of(PumpType type) {
   return type == PumpType::A4VSG ? PumpLimits{-100.0, 100.0} : PumpLimits{0.0, 100.0};
 }
 
-SelectedCommands select_commands(const SetSelection& sel, const ParameterSource& p, const AnalogInputs& analog,
+SelectedCommands select_commands(const SetSelection& sel, const CardParameters& p, const AnalogInputs& analog,
                                  const Settings& s) {
   SelectedCommands c;
   const int k = sel.set;
   const int g = sel.group();
   if (sel.binary) {
-    c.alpha_pct = eu(p, at(idx::kAngleCmdBinary0, k), kScalePercent);
-    c.pressure_bar = eu(p, at(idx::kPressCmdBinary0, k), kScaleTable);
-    c.power_pct = eu(p, at(idx::kPowerCmdBinary0, k), kScaleTable);
-    c.ramp_alpha_s = eu(p, at(idx::kAngleRampBinary0, k), kScaleRamp);
-    c.ramp_pressure_s = eu(p, at(idx::kPressRampBinary0, k), kScaleRamp);
+    c.alpha_pct = to_eu(p.angle_cmd_binary(k), kScalePercent);
+    c.pressure_bar = to_eu(p.press_cmd_binary(k), kScaleTable);
+    c.power_pct = to_eu(p.power_cmd_binary(k), kScaleTable);
+    c.ramp_alpha_s = to_eu(p.angle_ramp_binary(k), kScaleRamp);
+    c.ramp_pressure_s = to_eu(p.press_ramp_binary(k), kScaleRamp);
   } else {
     if (s.cmd_source == CommandSource::Bus) {
-      c.alpha_pct = eu(p, idx::kAngleCmdBus, kScalePercent);
-      const double pressure = eu(p, idx::kPressureCmdBus, kScalePercent);
+      c.alpha_pct = to_eu(p.angle_cmd_bus(), kScalePercent);
+      const double pressure = to_eu(p.pressure_cmd_bus(), kScalePercent);
       c.pressure_bar = s.pressure_bus_unit == PressureBusUnit::Bar ? pressure : pressure * s.p_ref_bar / 100.0;
-      c.power_pct = eu(p, idx::kPowerCmdBus, kScalePercent);
+      c.power_pct = to_eu(p.power_cmd_bus(), kScalePercent);
     } else {
       c.alpha_pct = analog.angle_b14_b16_pct;
       c.pressure_bar = analog.pressure_b18_b20_bar;
       c.power_pct = analog.power_f8_f10_pct;
     }
     if (s.direct_mode_ramps_set0) {
-      c.ramp_alpha_s = eu(p, idx::kAngleRampBinary0, kScaleRamp);
-      c.ramp_pressure_s = eu(p, idx::kPressRampBinary0, kScaleRamp);
+      c.ramp_alpha_s = to_eu(p.angle_ramp_binary(0), kScaleRamp);
+      c.ramp_pressure_s = to_eu(p.press_ramp_binary(0), kScaleRamp);
     }
   }
-  c.kp = eu(p, at(idx::kContrPBinary0, 4 * g), kScaleGain);
-  c.ti_ms = eu(p, at(idx::kContrIBinary0, 4 * g), kScaleOne);
-  c.slave_alpha_pct = s.cmd_source == CommandSource::Bus ? eu(p, idx::kResAngleCmdBus, kScalePercent)
+  c.kp = to_eu(p.contr_p(g), kScaleGain);
+  c.ti_ms = to_eu(p.contr_i(g), kScaleOne);
+  c.slave_alpha_pct = s.cmd_source == CommandSource::Bus ? to_eu(p.res_angle_cmd_bus(), kScalePercent)
                                                          : analog.angle_b2_b4_pct;
 
   const auto lim = limits_of(s.pump_type);

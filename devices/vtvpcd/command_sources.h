@@ -8,16 +8,10 @@
 #include <cstdint>
 
 #include "devices/vtvpcd/binary_set_selector.h"
+#include "devices/vtvpcd/card_parameters.h"
 #include "devices/vtvpcd/settings.h"
 
 namespace vtvpcd {
-
-/// Raw values of the manufacturer objects (implemented over the object dictionary).
-class ParameterSource {
- public:
-  virtual ~ParameterSource() = default;
-  virtual std::int64_t raw(std::uint16_t index) const = 0;
-};
 
 /// The card's analog command inputs in EU (side interface / plant ports).
 struct AnalogInputs {
@@ -44,7 +38,7 @@ struct SelectedCommands {
   double slave_alpha_pct = 0; ///< resulting angle commanded to a slave
 };
 
-SelectedCommands select_commands(const SetSelection& sel, const ParameterSource& p, const AnalogInputs& analog,
+SelectedCommands select_commands(const SetSelection& sel, const CardParameters& p, const AnalogInputs& analog,
                                  const Settings& s);
 
 }  // namespace vtvpcd
