@@ -76,7 +76,7 @@ VtvpcdDevice::VtvpcdDevice(Settings settings)
   auto& od = node_->od();
   params_ = std::make_unique<CardParameters>(od);
   faults_ = std::make_unique<FaultMonitor>(node_->emergency(), settings_);
-  eu_out_.resize(kEuSlotCount);
+  static_assert(std::tuple_size_v<decltype(eu_out_)> == kEuSlotCount);
   for (std::size_t s = 0; s < kEuSlotCount; ++s) {
     eu_out_[s].entry = canopen::BoundEntry<std::int32_t>(od, kEuSlotIndex[s], 0);
     eu_out_[s].scale = s == kPressCmd && settings_.press_cmd_scale_printed ? kScalePressCmdPrinted : kEuSlotScale[s];
@@ -250,11 +250,10 @@ void VtvpcdDevice::on_communication_recovered(canopen::CommError error) {
 // ---- the control cycle --------------------------------------------------------------------------
 
 std::uint16_t VtvpcdDevice::discrete_inputs() const {
-  std::uint16_t w = 0;
-  for (std::size_t i = 0; i < di_.size(); ++i)
-    if (high(di_[i])) w |= static_cast<std::uint16_t>(1u << i);
-  if (high(enable_)) w |= di::kEnable;
-  return w;
+  unsigned w = 0;
+  for (std::size_t i = 0; i < di_.size(); ++i) w |= static_cast<unsigned>(high(di_[i])) << i;
+  w |= static_cast<unsigned>(high(enable_)) * di::kEnable;
+  return static_cast<std::uint16_t>(w);
 }
 
 void VtvpcdDevice::process(sim::Time, sim::Duration dt) {
@@ -300,14 +299,15 @@ void VtvpcdDevice::control_cycle(double dt_s) {
 
   const AnalogInputs analog{analog_angle_b14_b16_ * 100.0, analog_angle_b2_b4_ * 100.0,
                             analog_pressure_b18_b20_ / kPaPerBar, analog_power_f8_f10_ * 100.0};
-  PumpController::Inputs in;
-  in.energised = enable && !faults_->stop_active();
-  in.alpha_meas = alpha_meas;
-  in.p_a = p_a;
-  in.p_b = p_b;
-  in.cmd = select_commands(sel, p, analog, settings_);
-  in.slave = sel.slave;
-  in.zero_valve_pct = std::clamp(to_eu(p.zeropoint_valve(), kScaleValveZero), -12.0, 12.0);
+  const PumpController::Inputs in{
+      .energised = enable && !faults_->stop_active(),
+      .alpha_meas = alpha_meas,
+      .p_a = p_a,
+      .p_b = p_b,
+      .cmd = command_selector_.select(sel, p, analog, settings_),
+      .slave = sel.slave,
+      .zero_valve_pct = std::clamp(to_eu(p.zeropoint_valve(), kScaleValveZero), -12.0, 12.0),
+  };
   const ControlOutputs& c = controller_.cycle(in, dt_s);
   if (settings_.monitor_enable) loop_monitor_.update(c, alpha_meas, settings_.p_ref_bar, dt_s);
 

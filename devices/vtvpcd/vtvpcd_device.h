@@ -73,6 +73,7 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   Settings settings_;
   std::unique_ptr<canopen::Node> node_;
   std::unique_ptr<CardParameters> params_;
+  CommandSelector command_selector_;
   DiscreteOutputs discrete_outputs_;
   PumpController controller_;
   std::unique_ptr<FaultMonitor> faults_;
@@ -110,7 +111,7 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
       entry.set(last_raw);
     }
   };
-  std::vector<EuReadout> eu_out_;  ///< by EU readout
+  std::array<EuReadout, 14> eu_out_{};  ///< by EU readout (EuSlot)
   /// The raw readouts: the binary set's table entries (INTEGER32) and three UNSIGNED16 words.
   canopen::BoundEntry<std::int32_t> angle_binary_out_, press_binary_out_, power_binary_out_;
   canopen::BoundEntry<std::uint16_t> bus_status_out_, discrete_inputs_out_, discrete_outputs_out_;
