@@ -1,5 +1,6 @@
 #include "devices/profiles/cia406/rotary_position.h"
 
+#include <bit>
 #include <cmath>
 
 namespace cia406 {
@@ -24,7 +25,12 @@ Int128 scaled_count(std::int64_t physical, const RotaryConfig& c) {
   Int128 directed = c.counter_clockwise() ? -static_cast<Int128>(physical) : static_cast<Int128>(physical);
   if (!c.multiturn) directed = floor_mod(directed, res);  // a singleturn count restarts every turn
   if (!c.scaling()) return directed;
-  return floor_div(directed * static_cast<Int128>(c.measuring_units_per_revolution), res);
+  const Int128 product = directed * static_cast<Int128>(c.measuring_units_per_revolution);
+  // A power-of-two resolution (16384 on the WDGA): the floor division is an arithmetic shift.
+  if (c.physical_resolution != 0 && (c.physical_resolution & (c.physical_resolution - 1)) == 0) {
+    return product >> std::countr_zero(c.physical_resolution);
+  }
+  return floor_div(product, res);
 }
 
 Int128 within_turn(Int128 unwrapped_scaled, const RotaryConfig& c) {
