@@ -63,6 +63,9 @@ class Measurement {
   bool frequency_exceeded_ = false;
   unsigned filter_constant_ = 1;
   std::uint16_t speed_numerator_ = 1, speed_denominator_ = 1, frequency_limit_ = 0xFFFF;
+  // Derived from config_ whenever it is loaded (it changes nowhere else).
+  double units_per_rev_ = 1.0;  ///< output steps per revolution the frequency limit divides by
+  std::uint64_t range_ = 1;     ///< config_.effective_range()
 
   // The process values, published in every cycle (6004h, 600Ch, 6030h, 6040h, 6050h, 6509h).
   canopen::BoundEntry<std::uint32_t> position_;

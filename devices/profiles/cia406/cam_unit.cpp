@@ -77,10 +77,19 @@ std::uint8_t CamUnit::update(std::int64_t x) {
   unsigned inside = 0;  // bit k: cam k's switching memory after this position
   for (int k = 0; k < kCams; ++k) {
     Cam& c = cams_[k];
-    c.low = low_[k].get();
-    c.high = high_[k].get();
-    if (c.inside) c.hysteresis = hysteresis_[k].get();  // only a cam inside uses it
-    inside |= static_cast<unsigned>(c.update(x)) << k;
+    const std::int64_t low = low_[k].get(), high = high_[k].get();
+    c.low = low;
+    c.high = high;
+    bool in;
+    if (c.inside) {  // only a cam inside uses its hysteresis (Cam::update, inline)
+      c.hysteresis = hysteresis_[k].get();
+      const auto h = static_cast<std::int64_t>(c.hysteresis > 0x7FFFFFFFull ? 0x7FFFFFFFull : c.hysteresis);
+      in = x >= low - h && x <= high + h;
+    } else {
+      in = x >= low && x <= high;
+    }
+    c.inside = in;
+    inside |= static_cast<unsigned>(in) << k;
   }
   // Bit k = enabled and (inside xor inverted).
   const auto state = static_cast<std::uint8_t>((inside ^ polarity_.get()) & enable_.get());
