@@ -51,6 +51,24 @@ inline std::int16_t saturate_i16(double v, double low = -32768.0, double high = 
   return static_cast<std::int16_t>(v);
 }
 
+/// std::round(x) bit for bit (half away from zero, the sign of zero kept), without the library
+/// call below 2^52, where the difference of x and its truncation is exact.
+inline double round_half_away(double x) {
+  if (!(std::fabs(x) < 4503599627370496.0)) return std::round(x);  // large (already integral), inf, NaN
+  const auto t = static_cast<std::int64_t>(x);
+  const double frac = x - static_cast<double>(t);
+  const std::int64_t r = t + (frac >= 0.5) - (frac <= -0.5);
+  return std::copysign(static_cast<double>(r), x);
+}
+
+/// std::llround(x) for |x| < 2^52 without the library call (the library beyond and for NaN).
+inline long long llround_half_away(double x) {
+  if (!(std::fabs(x) < 4503599627370496.0)) return std::llround(x);
+  const auto t = static_cast<std::int64_t>(x);
+  const double frac = x - static_cast<double>(t);
+  return t + (frac >= 0.5) - (frac <= -0.5);
+}
+
 /// Two's complement truncation to 32 bits (what an INTEGER32 object shows of a wider value).
 inline std::int32_t truncate_i32(Int128 v) {
   return static_cast<std::int32_t>(static_cast<std::uint32_t>(static_cast<std::uint64_t>(v) & 0xFFFFFFFFu));
