@@ -132,6 +132,10 @@ void FaultMonitor::activate(Condition c) {
 
 void FaultMonitor::update(bool enable_rising_edge) {
   const Set present = injected_ | detected_ | events_;
+  if ((present | active_) == 0 && register_bits_ == 0 && !emcy_.any_active()) {
+    order_len_ = 0;  // nothing present, active or reported: what the steps below would leave
+    return;
+  }
   events_ = 0;  // an event is present for one evaluation only
   // New ones join the activation order in table order; gone ones drop unless they latch.
   for (Set rising = present & ~active_; rising != 0; rising &= rising - 1)
