@@ -70,26 +70,24 @@ void CamUnit::bind(ObjectDictionary& od, SdoAbort abort) {
 }
 
 void CamUnit::reset() {
-  for (auto& c : cams_) c.inside = false;
+  inside_.fill(false);
 }
 
 std::uint8_t CamUnit::update(std::int64_t x) {
+  // Cam::update() on the limits of this cycle, inline; only the switching memory is kept (the
+  // limits are read anew in every cycle, so a value written by SDO or PDO, or reset, acts at once).
   unsigned inside = 0;  // bit k: cam k's switching memory after this position
   for (int k = 0; k < kCams; ++k) {
-    Cam& c = cams_[k];
+    bool& memory = inside_[static_cast<std::size_t>(k)];
     const std::int64_t low = low_[k].get(), high = high_[k].get();
-    c.low = low;
-    c.high = high;
-    bool in;
-    if (c.inside) {  // only a cam inside uses its hysteresis (Cam::update, inline)
-      c.hysteresis = hysteresis_[k].get();
-      const auto h = static_cast<std::int64_t>(c.hysteresis > 0x7FFFFFFFull ? 0x7FFFFFFFull : c.hysteresis);
-      in = x >= low - h && x <= high + h;
+    if (memory) {  // only a cam inside uses its hysteresis
+      const std::uint32_t hysteresis = hysteresis_[k].get();
+      const auto h = static_cast<std::int64_t>(hysteresis > 0x7FFFFFFFu ? 0x7FFFFFFFu : hysteresis);
+      memory = x >= low - h && x <= high + h;
     } else {
-      in = x >= low && x <= high;
+      memory = x >= low && x <= high;
     }
-    c.inside = in;
-    inside |= static_cast<unsigned>(in) << k;
+    inside |= static_cast<unsigned>(memory) << k;
   }
   // Bit k = enabled and (inside xor inverted).
   const auto state = static_cast<std::uint8_t>((inside ^ polarity_.get()) & enable_.get());

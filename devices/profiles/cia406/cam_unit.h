@@ -41,7 +41,7 @@ class CamUnit {
   std::uint8_t update(std::int64_t x);
 
  private:
-  std::array<Cam, kCams> cams_{};
+  std::array<bool, kCams> inside_{};  ///< the cams' switching memories (kept whether enabled or not)
   // Read in every cycle, so a limit written by SDO or PDO, or reset, acts in the next one.
   canopen::BoundEntry<std::uint8_t> state_, enable_, polarity_;
   std::array<canopen::BoundEntry<std::int32_t>, kCams> low_{}, high_{};
