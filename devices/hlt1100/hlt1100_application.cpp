@@ -239,7 +239,7 @@ void Application::sample(sim::Time now, bool evaluate_alarms) {
   if (valid_) {
     // µm/s → units of 6005h:02 × 0.01 mm/s = 10 µm/s.
     const double um_per_s = motion_.speed() * (config_.decreasing ? -1.0 : 1.0);
-    speed = std::round(um_per_s / (10.0 * settings_.speed_step));
+    speed = cia406::round_half_away(um_per_s / (10.0 * settings_.speed_step));  // = std::round
   }
   cia406::publish(*speed_, cia406::saturate_i16(speed));
   if (evaluate_alarms) diagnostics_.set_alarm(kPositionError, !valid_);

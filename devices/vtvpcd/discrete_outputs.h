@@ -26,8 +26,22 @@ struct OutputState {
   bool binary = false;
 };
 
+/// The value of every output function at once: bit f = the value of OutputFunction f.
+std::uint8_t function_values(const OutputState& s);
 bool output_function_value(OutputFunction f, const OutputState& s);
-std::uint16_t discrete_outputs(const std::array<OutputFunction, 7>& functions, const OutputState& s,
-                               std::uint8_t shorted);
+
+/// The functions of DO1, DO2..DO7 resolved once (settings do not change at run time): the word
+/// of a cycle is one look-up on the values of the eight functions.
+class DiscreteOutputs {
+ public:
+  explicit DiscreteOutputs(const std::array<OutputFunction, 7>& functions);
+  std::uint16_t word(const OutputState& s, std::uint8_t shorted) const {
+    const std::uint16_t w = by_values_[function_values(s)] | (s.ok ? dout::kOk : 0);
+    return static_cast<std::uint16_t>(w & ~shorted);
+  }
+
+ private:
+  std::array<std::uint16_t, 256> by_values_{};  ///< DO1, DO2..DO7 bits by function values
+};
 
 }  // namespace vtvpcd

@@ -111,14 +111,10 @@ std::optional<Condition> find_condition(std::string_view name) {
   return std::nullopt;
 }
 
-FaultMonitor::FaultMonitor(canopen::Emergency& emcy, const Settings& settings) : emcy_(emcy), s_(settings) {}
-
-FaultMonitor::Set FaultMonitor::stopping() const {
-  if (s_.timeout_reaction == TimeoutReaction::Report) return kStops & ~bit(C::BusTimeout);
-  return kStops;
-}
-
-FaultMonitor::Set FaultMonitor::latching() const { return kEvents | (s_.fault_latch ? kNumberedStops : 0); }
+FaultMonitor::FaultMonitor(canopen::Emergency& emcy, const Settings& settings)
+    : emcy_(emcy),
+      latching_(kEvents | (settings.fault_latch ? kNumberedStops : 0)),
+      stopping_(settings.timeout_reaction == TimeoutReaction::Report ? kStops & ~bit(C::BusTimeout) : kStops) {}
 
 void FaultMonitor::signal_event(Condition c) { events_ |= bit(c); }
 
@@ -136,11 +132,15 @@ void FaultMonitor::activate(Condition c) {
 
 void FaultMonitor::update(bool enable_rising_edge) {
   const Set present = injected_ | detected_ | events_;
+  if ((present | active_) == 0 && register_bits_ == 0 && !emcy_.any_active()) {
+    order_len_ = 0;  // nothing present, active or reported: what the steps below would leave
+    return;
+  }
   events_ = 0;  // an event is present for one evaluation only
   // New ones join the activation order in table order; gone ones drop unless they latch.
   for (Set rising = present & ~active_; rising != 0; rising &= rising - 1)
     activate(static_cast<Condition>(std::countr_zero(rising)));
-  const Set gone = active_ & ~present & (enable_rising_edge ? ~Set{0} : ~latching());
+  const Set gone = active_ & ~present & (enable_rising_edge ? ~Set{0} : ~latching_);
   active_ &= ~gone;
   sync_emergency();
 }
@@ -183,8 +183,6 @@ void FaultMonitor::reset() {
   emcy_.clear_all();  // silent: the node is initialising
 }
 
-bool FaultMonitor::stop_active() const { return (active_ & stopping()) != 0; }
-
 std::uint16_t FaultMonitor::bus_status() const {
   std::uint8_t number = 0;
   bool any_numbered = false;
@@ -200,12 +198,6 @@ std::uint16_t FaultMonitor::bus_status() const {
   const std::uint8_t flags = emcy_.error_register();
   if (!any_numbered && flags == 0) return 0;
   return static_cast<std::uint16_t>(flags << 8 | number);
-}
-
-std::uint8_t FaultMonitor::shorted_outputs() const {
-  // Do1Short..Do7Short are consecutive, in the 0x2F26 bit order.
-  static_assert(static_cast<int>(C::Do7Short) - static_cast<int>(C::Do1Short) == 7);
-  return static_cast<std::uint8_t>(active_ >> static_cast<unsigned>(C::Do1Short));
 }
 
 }  // namespace vtvpcd

@@ -95,11 +95,15 @@ class FaultMonitor {
 
   bool active(Condition c) const { return (active_ & bit(c)) != 0; }
   bool any_active() const { return active_ != 0; }
-  bool stop_active() const;
+  bool stop_active() const { return (active_ & stopping_) != 0; }
   /// Bus Status 0x2C68: error flags (= error register, A25) << 8 | number of the latest fault.
   std::uint16_t bus_status() const;
   /// Discrete Outputs bits forced off by a short (faults 26..33).
-  std::uint8_t shorted_outputs() const;
+  std::uint8_t shorted_outputs() const {
+    // Do1Short..Do7Short are consecutive, in the 0x2F26 bit order.
+    static_assert(static_cast<int>(Condition::Do7Short) - static_cast<int>(Condition::Do1Short) == 7);
+    return static_cast<std::uint8_t>(active_ >> static_cast<unsigned>(Condition::Do1Short));
+  }
 
  private:
   /// One bit per condition (bit n = Condition n): the per-cycle work is a few mask operations.
@@ -107,15 +111,15 @@ class FaultMonitor {
   static_assert(static_cast<std::size_t>(Condition::kCount) <= 32);
   static constexpr Set bit(Condition c) { return Set{1} << static_cast<unsigned>(c); }
   static void assign(Set& set, Condition c, bool present) { set = present ? (set | bit(c)) : (set & ~bit(c)); }
-  /// Conditions that stay active until acknowledged once their cause is gone.
-  Set latching() const;
-  /// Conditions whose reaction is Stop (with this card's settings).
-  Set stopping() const;
   void activate(Condition c);
   void sync_emergency();
 
   canopen::Emergency& emcy_;
-  const Settings& s_;
+  /// Conditions that stay active until acknowledged once their cause is gone (settings are
+  /// fixed for the card's life: worked out once).
+  const Set latching_;
+  /// Conditions whose reaction is Stop (with this card's settings).
+  const Set stopping_;
   Set injected_ = 0, detected_ = 0, events_ = 0, active_ = 0;
   /// Activation order (oldest first) for "the most recent fault".
   std::array<Condition, static_cast<std::size_t>(Condition::kCount)> order_{};

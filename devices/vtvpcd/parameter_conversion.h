@@ -29,8 +29,14 @@ inline constexpr Scale kScaleValveZero{150, 1};     ///< Zeropoint valve
 inline constexpr Scale kScaleLvdtGain{63, 5};       ///< 12,6: Gain LVDT pump
 inline constexpr Scale kScaleOne{1, 1};
 
+/// floor(y) for y >= 0: below 2^63 the truncation of one conversion (no libm call; the readouts
+/// are converted every cycle), the library above and for NaN.
+inline double floor_non_negative(double y) {
+  return y < 9223372036854775808.0 ? static_cast<double>(static_cast<std::int64_t>(y)) : std::floor(y);
+}
+
 /// "Arithmetically rounded": half away from zero.
-inline double round_half_away(double x) { return x < 0 ? -std::floor(-x + 0.5) : std::floor(x + 0.5); }
+inline double round_half_away(double x) { return x < 0 ? -floor_non_negative(-x + 0.5) : floor_non_negative(x + 0.5); }
 
 /// EU -> raw: round(EU * num / den). The product EU*num is exact for the manual's decimal
 /// examples, and the one division rounds correctly, so x.5 cases land exactly on x.5.

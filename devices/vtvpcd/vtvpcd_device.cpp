@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "devices/canopen/emergency.h"
 #include "devices/canopen/error_control.h"
@@ -10,7 +13,6 @@
 #include "devices/vtvpcd/binary_set_selector.h"
 #include "devices/vtvpcd/communication.h"
 #include "devices/vtvpcd/dictionary.h"
-#include "devices/vtvpcd/discrete_outputs.h"
 #include "devices/vtvpcd/manufacturer_objects.h"
 
 namespace vtvpcd {
@@ -18,8 +20,8 @@ namespace vtvpcd {
 namespace {
 constexpr double kPaPerBar = 1e5;
 
-/// Read-only objects published every cycle, by slot.
-enum Slot : std::size_t {
+/// The read-only readouts converted from an EU value every cycle, by slot.
+enum EuSlot : std::size_t {
   kActAngle,
   kActPressureA,
   kActPressureB,
@@ -27,61 +29,28 @@ enum Slot : std::size_t {
   kAngleCmd,
   kAngleB14B16,
   kAngleB2B4,
-  kAngleBinary,
-  kBusStatus,
-  kDiscreteInputs,
-  kDiscreteOutputs,
   kPowerCmd,
   kPowerF8F10,
-  kPowerBinary,
   kPressCmd,
   kPressB18B20,
-  kPressBinary,
   kPressureStroke,
   kResAngleCmd,
   kValveCmd,
-  kSlotCount
+  kEuSlotCount
 };
-constexpr std::array<std::uint16_t, kSlotCount> kSlotIndex{
-    idx::kActAngle,        idx::kActPressureA,    idx::kActPressureB,   idx::kActValve,         idx::kAngleCmd,
-    idx::kAngleCmdB14B16,  idx::kAngleCmdB2B4,    idx::kAngleCmdBinary, idx::kBusStatus,        idx::kDiscreteInputs,
-    idx::kDiscreteOutputs, idx::kPowerCmd,        idx::kPowerCmdF8F10,  idx::kPowerCmdBinary,   idx::kPressCmd,
-    idx::kPressCmdB18B20,  idx::kPressCmdBinary,  idx::kPressureStroke, idx::kResAngleCmd,      idx::kValveCmd};
+constexpr std::array<std::uint16_t, kEuSlotCount> kEuSlotIndex{
+    idx::kActAngle,       idx::kActPressureA,   idx::kActPressureB,  idx::kActValve,         idx::kAngleCmd,
+    idx::kAngleCmdB14B16, idx::kAngleCmdB2B4,   idx::kPowerCmd,      idx::kPowerCmdF8F10,    idx::kPressCmd,
+    idx::kPressCmdB18B20, idx::kPressureStroke, idx::kResAngleCmd,   idx::kValveCmd};
 
-/// The printed scale each EU readout is converted with (kScaleOne: a raw readout, put() only).
-/// Press CMD's depends on a setting (see scale_of).
-constexpr std::array<Scale, kSlotCount> kSlotScale{
+/// The printed scale each EU readout is converted with. Press CMD's depends on a setting (A7).
+constexpr std::array<Scale, kEuSlotCount> kEuSlotScale{
     kScalePercent, kScalePercent, kScalePercent, kScaleTable,   kScalePercent,  // act. angle .. Angle CMD
-    kScalePercent, kScalePercent, kScaleOne,     kScaleOne,     kScaleOne,      // b14/b16, b2/b4, binary, bus status, DI
-    kScaleOne,     kScalePercent, kScalePercent, kScaleOne,     kScalePercent,  // DO, Power CMD, f8/f10, binary, Press CMD
-    kScalePercent, kScaleOne,     kScaleTable,   kScaleTable,   kScaleTable};   // b18/b20, binary, stroke, res. angle, valve
+    kScalePercent, kScalePercent, kScalePercent, kScalePercent, kScalePercent,  // b14/b16, b2/b4, Power CMD, f8/f10, Press CMD
+    kScalePercent, kScaleTable,   kScaleTable,   kScaleTable};                  // b18/b20, stroke, res. angle, valve
 
 bool high(double v) { return v >= 0.5; }
 }  // namespace
-
-/// The manufacturer objects' raw values by index, bound to their entries once: a page of 256
-/// entries per used high byte of 0x2000..0x2FFF, so a lookup is two loads and an inline decode.
-class VtvpcdDevice::OdParameters final : public ParameterSource {
- public:
-  explicit OdParameters(canopen::ObjectDictionary& od) {
-    for (const auto& spec : manufacturer_objects()) {
-      if ((spec.index & 0xF000) != 0x2000) continue;  // every manual object is in 0x2000..0x2FFF
-      auto& page = pages_[(spec.index >> 8) & 0xF];
-      if (page.empty()) page.resize(256);
-      page[spec.index & 0xFF] = devices::IntegerEntry(od.entry(spec.index, 0));
-    }
-  }
-  std::int64_t raw(std::uint16_t index) const override {
-    if ((index & 0xF000) != 0x2000) return 0;
-    const auto& page = pages_[(index >> 8) & 0xF];
-    if (page.empty()) return 0;
-    const devices::IntegerEntry& e = page[index & 0xFF];
-    return e ? e.as<std::int64_t>() : 0;
-  }
-
- private:
-  std::array<std::vector<devices::IntegerEntry>, 16> pages_;
-};
 
 // ---- construction -------------------------------------------------------------------------------
 
@@ -101,18 +70,26 @@ std::unique_ptr<VtvpcdDevice> VtvpcdDevice::create(const devices::DeviceOptions&
   return std::unique_ptr<VtvpcdDevice>(new VtvpcdDevice(std::move(settings)));
 }
 
-VtvpcdDevice::VtvpcdDevice(Settings settings) : settings_(std::move(settings)), controller_(settings_) {
+VtvpcdDevice::VtvpcdDevice(Settings settings)
+    : settings_(std::move(settings)), discrete_outputs_(settings_.do_functions), controller_(settings_) {
   node_ = std::make_unique<canopen::Node>("vtvpcd", build_dictionary(settings_), make_policy(settings_),
                                           settings_.node_id);
   install_communication_rules(*node_, settings_);
   node_->set_application(this);
-  params_ = std::make_unique<OdParameters>(node_->od());
+  auto& od = node_->od();
+  params_ = std::make_unique<CardParameters>(od);
   faults_ = std::make_unique<FaultMonitor>(node_->emergency(), settings_);
-  out_.resize(kSlotCount);
-  for (std::size_t s = 0; s < kSlotCount; ++s) {
-    const Scale scale = s == kPressCmd && settings_.press_cmd_scale_printed ? kScalePressCmdPrinted : kSlotScale[s];
-    out_[s].bind(node_->od().entry(kSlotIndex[s], 0), scale);
+  static_assert(std::tuple_size_v<decltype(eu_out_)> == kEuSlotCount);
+  for (std::size_t s = 0; s < kEuSlotCount; ++s) {
+    eu_out_[s].entry = canopen::BoundEntry<std::int32_t>(od, kEuSlotIndex[s], 0);
+    eu_out_[s].scale = s == kPressCmd && settings_.press_cmd_scale_printed ? kScalePressCmdPrinted : kEuSlotScale[s];
   }
+  angle_binary_out_ = canopen::BoundEntry<std::int32_t>(od, idx::kAngleCmdBinary, 0);
+  press_binary_out_ = canopen::BoundEntry<std::int32_t>(od, idx::kPressCmdBinary, 0);
+  power_binary_out_ = canopen::BoundEntry<std::int32_t>(od, idx::kPowerCmdBinary, 0);
+  bus_status_out_ = canopen::BoundEntry<std::uint16_t>(od, idx::kBusStatus, 0);
+  discrete_inputs_out_ = canopen::BoundEntry<std::uint16_t>(od, idx::kDiscreteInputs, 0);
+  discrete_outputs_out_ = canopen::BoundEntry<std::uint16_t>(od, idx::kDiscreteOutputs, 0);
   if (settings_.builtin_plant) {
     builtin_.emplace(settings_.plant, settings_.pump_type);
     apply_plant_to_inputs();
@@ -276,11 +253,18 @@ void VtvpcdDevice::on_communication_recovered(canopen::CommError error) {
 // ---- the control cycle --------------------------------------------------------------------------
 
 std::uint16_t VtvpcdDevice::discrete_inputs() const {
-  std::uint16_t w = 0;
-  for (std::size_t i = 0; i < di_.size(); ++i)
-    if (high(di_[i])) w |= static_cast<std::uint16_t>(1u << i);
-  if (high(enable_)) w |= di::kEnable;
-  return w;
+  unsigned w = 0;
+#if defined(__SSE2__)
+  // Every control cycle: two inputs per compare (>= 0.5, false for NaN as high() is).
+  static_assert(std::tuple_size_v<decltype(di_)> == 6);
+  const __m128d half = _mm_set1_pd(0.5);
+  for (std::size_t i = 0; i < di_.size(); i += 2)
+    w |= static_cast<unsigned>(_mm_movemask_pd(_mm_cmpge_pd(_mm_loadu_pd(&di_[i]), half))) << i;
+#else
+  for (std::size_t i = 0; i < di_.size(); ++i) w |= static_cast<unsigned>(high(di_[i])) << i;
+#endif
+  w |= static_cast<unsigned>(high(enable_)) * di::kEnable;
+  return static_cast<std::uint16_t>(w);
 }
 
 void VtvpcdDevice::process(sim::Time, sim::Duration dt) {
@@ -300,14 +284,13 @@ void VtvpcdDevice::apply_plant_to_inputs() {
 }
 
 void VtvpcdDevice::control_cycle(double dt_s) {
-  const auto& od_params = *params_;
+  const CardParameters& p = *params_;
   const std::uint16_t di_word = discrete_inputs();
   const bool enable = (di_word & di::kEnable) != 0;
   const bool enable_rising = enable && !previous_enable_;
   previous_enable_ = enable;
 
-  const auto trigger = static_cast<std::uint32_t>(od_params.raw(idx::kTrigger));
-  const SetSelection sel = select_binary_set(trigger, di_word, settings_.trigger_multibit);
+  const SetSelection sel = select_binary_set(p.trigger(), di_word, settings_.trigger_multibit);
 
   faults_->set_detected(Condition::TriggerInvalid, sel.trigger_invalid);
   faults_->set_detected(Condition::BusTimeout, lifeguard_timeout_ || heartbeat_timeout_);
@@ -319,22 +302,23 @@ void VtvpcdDevice::control_cycle(double dt_s) {
 
   // Measured values; a broken transducer reads 0.
   const bool lvdt_ok = !faults_->active(Condition::LvdtElectronics);
-  const double gain = std::clamp(to_eu(od_params.raw(idx::kGainLvdtPump), kScaleLvdtGain), 0.0, 200.0);
-  const double zero_pump = std::clamp(to_eu(od_params.raw(idx::kZeropointPump), kScaleTable), -20.0, 20.0);
+  const double gain = std::clamp(to_eu(p.gain_lvdt_pump(), kScaleLvdtGain), 0.0, 200.0);
+  const double zero_pump = std::clamp(to_eu(p.zeropoint_pump(), kScaleTable), -20.0, 20.0);
   const double alpha_meas = lvdt_ok ? gain / 100.0 * (swivel_angle_ * 100.0) + zero_pump : 0.0;
   const double p_a = faults_->active(Condition::PressureASensor) ? 0.0 : std::max(pressure_a_ / kPaPerBar, 0.0);
   const double p_b = faults_->active(Condition::PressureBSensor) ? 0.0 : std::max(pressure_b_ / kPaPerBar, 0.0);
 
   const AnalogInputs analog{analog_angle_b14_b16_ * 100.0, analog_angle_b2_b4_ * 100.0,
                             analog_pressure_b18_b20_ / kPaPerBar, analog_power_f8_f10_ * 100.0};
-  PumpController::Inputs in;
-  in.energised = enable && !faults_->stop_active();
-  in.alpha_meas = alpha_meas;
-  in.p_a = p_a;
-  in.p_b = p_b;
-  in.cmd = select_commands(sel, od_params, analog, settings_);
-  in.slave = sel.slave;
-  in.zero_valve_pct = std::clamp(to_eu(od_params.raw(idx::kZeropointValve), kScaleValveZero), -12.0, 12.0);
+  const PumpController::Inputs in{
+      .energised = enable && !faults_->stop_active(),
+      .alpha_meas = alpha_meas,
+      .p_a = p_a,
+      .p_b = p_b,
+      .cmd = command_selector_.select(sel, p, analog, settings_),
+      .slave = sel.slave,
+      .zero_valve_pct = std::clamp(to_eu(p.zeropoint_valve(), kScaleValveZero), -12.0, 12.0),
+  };
   const ControlOutputs& c = controller_.cycle(in, dt_s);
   if (settings_.monitor_enable) loop_monitor_.update(c, alpha_meas, settings_.p_ref_bar, dt_s);
 
@@ -347,55 +331,29 @@ void VtvpcdDevice::control_cycle(double dt_s) {
   }
 }
 
-void VtvpcdDevice::OutputSlot::bind(canopen::OdEntry* e, Scale eu_scale) {
-  entry = devices::IntegerEntry(e);
-  scale = eu_scale;
-  const bool is_signed = canopen::is_signed_integer(e->type);
-  const int bits = static_cast<int>(e->value.size() * 8);
-  lo = is_signed ? -(std::int64_t{1} << (bits - 1)) : 0;
-  hi = is_signed ? (std::int64_t{1} << (bits - 1)) - 1 : (std::int64_t{1} << bits) - 1;
-}
-
-inline void VtvpcdDevice::put(std::size_t slot, std::int64_t raw) {
-  const OutputSlot& o = out_[slot];
-  o.entry.store(std::clamp(raw, o.lo, o.hi));
-}
-
-inline void VtvpcdDevice::put_eu(std::size_t slot, double eu) {
-  // An unchanged EU value has the raw value converted last time, with the slot's one scale (NaN
-  // never compares equal, so it is converted anew). The bytes are written every cycle all the
-  // same: a reset may have put the default there meanwhile.
-  OutputSlot& o = out_[slot];
-  if (!(eu == o.last_eu)) {
-    o.last_eu = eu;
-    o.last_raw = to_raw(eu, o.scale);
-  }
-  put(slot, o.last_raw);
-}
-
 void VtvpcdDevice::publish(const SetSelection& sel, double alpha_meas, double p_a, double p_b, std::uint16_t di_word) {
   const ControlOutputs& c = controller_.outputs();
-  const auto& p = *params_;
-  put_eu(kActAngle, alpha_meas);
-  put_eu(kActPressureA, p_a);
-  put_eu(kActPressureB, p_b);
-  put_eu(kActValve, pilot_spool_position_ * 100.0);
-  put_eu(kAngleCmd, c.alpha_r);
-  put_eu(kAngleB14B16, analog_angle_b14_b16_ * 100.0);
-  put_eu(kAngleB2B4, analog_angle_b2_b4_ * 100.0);
-  put_eu(kPressB18B20, analog_pressure_b18_b20_ / kPaPerBar);
-  put_eu(kPowerF8F10, analog_power_f8_f10_ * 100.0);
+  const CardParameters& p = *params_;
+  eu_out_[kActAngle].put(alpha_meas);
+  eu_out_[kActPressureA].put(p_a);
+  eu_out_[kActPressureB].put(p_b);
+  eu_out_[kActValve].put(pilot_spool_position_ * 100.0);
+  eu_out_[kAngleCmd].put(c.alpha_r);
+  eu_out_[kAngleB14B16].put(analog_angle_b14_b16_ * 100.0);
+  eu_out_[kAngleB2B4].put(analog_angle_b2_b4_ * 100.0);
+  eu_out_[kPressB18B20].put(analog_pressure_b18_b20_ / kPaPerBar);
+  eu_out_[kPowerF8F10].put(analog_power_f8_f10_ * 100.0);
   // The "binary" readouts carry the raw table entry of set k unchanged (A33, A40).
-  put(kAngleBinary, p.raw(static_cast<std::uint16_t>(idx::kAngleCmdBinary0 + sel.set)));
-  put(kPressBinary, p.raw(static_cast<std::uint16_t>(idx::kPressCmdBinary0 + sel.set)));
-  put(kPowerBinary, p.raw(static_cast<std::uint16_t>(idx::kPowerCmdBinary0 + sel.set)));
-  put_eu(kPowerCmd, c.power_r);
-  put_eu(kPressCmd, c.p_r);
-  put_eu(kPressureStroke, c.alpha_p);
-  put_eu(kResAngleCmd, c.alpha_res);
-  put_eu(kValveCmd, c.valve_cmd);
-  put(kDiscreteInputs, di_word);
-  put(kBusStatus, faults_->bus_status());
+  angle_binary_out_.set(p.angle_cmd_binary(sel.set));
+  press_binary_out_.set(p.press_cmd_binary(sel.set));
+  power_binary_out_.set(p.power_cmd_binary(sel.set));
+  eu_out_[kPowerCmd].put(c.power_r);
+  eu_out_[kPressCmd].put(c.p_r);
+  eu_out_[kPressureStroke].put(c.alpha_p);
+  eu_out_[kResAngleCmd].put(c.alpha_res);
+  eu_out_[kValveCmd].put(c.valve_cmd);
+  discrete_inputs_out_.set(di_word);
+  bus_status_out_.set(faults_->bus_status());
   OutputState os;
   os.control = &c;
   os.alpha_meas = alpha_meas;
@@ -403,7 +361,7 @@ void VtvpcdDevice::publish(const SetSelection& sel, double alpha_meas, double p_
   os.ok = !faults_->any_active();
   os.slave = sel.slave;
   os.binary = sel.binary;
-  put(kDiscreteOutputs, discrete_outputs(settings_.do_functions, os, faults_->shorted_outputs()));
+  discrete_outputs_out_.set(discrete_outputs_.word(os, faults_->shorted_outputs()));
 }
 
 devices::ProfileStatus VtvpcdDevice::profile_status() {

@@ -12,10 +12,12 @@
 #include <utility>
 #include <vector>
 
+#include "devices/canopen/bound_entry.h"
 #include "devices/device.h"
-#include "devices/entry_value.h"
 #include "devices/vtvpcd/builtin_pump_model.h"
+#include "devices/vtvpcd/card_parameters.h"
 #include "devices/vtvpcd/command_sources.h"
+#include "devices/vtvpcd/discrete_outputs.h"
 #include "devices/vtvpcd/fault_monitor.h"
 #include "devices/vtvpcd/loop_monitor.h"
 #include "devices/vtvpcd/parameter_conversion.h"
@@ -62,19 +64,17 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
 
  private:
   explicit VtvpcdDevice(Settings settings);
-  class OdParameters;
 
   void install_device_hooks();
   void control_cycle(double dt_s);
   void publish(const SetSelection& sel, double alpha_meas, double p_a, double p_b, std::uint16_t di_word);
-  void put(std::size_t slot, std::int64_t raw);
-  /// Converts `eu` with the slot's scale and publishes it.
-  void put_eu(std::size_t slot, double eu);
   void apply_plant_to_inputs();
 
   Settings settings_;
   std::unique_ptr<canopen::Node> node_;
-  std::unique_ptr<OdParameters> params_;
+  std::unique_ptr<CardParameters> params_;
+  CommandSelector command_selector_;
+  DiscreteOutputs discrete_outputs_;
   PumpController controller_;
   std::unique_ptr<FaultMonitor> faults_;
   LoopMonitor loop_monitor_;
@@ -94,18 +94,27 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   double analog_power_f8_f10_ = 0;    ///< in: 0..1
 
   // Run state.
-  /// A read-only object the cycle publishes: its entry, the range of its type, the scale of its
-  /// EU value, and the EU value it was last converted from (the conversion is skipped while that
-  /// does not change).
-  struct OutputSlot {
-    devices::IntegerEntry entry;
-    std::int64_t lo = 0, hi = 0;
+  /// A read-only INTEGER32 readout the cycle converts from an EU value: its entry, the scale, and
+  /// the EU value it was last converted from (the conversion is skipped while that does not
+  /// change; the bytes are written every cycle all the same: a reset may have put the start value
+  /// there meanwhile).
+  struct EuReadout {
+    canopen::BoundEntry<std::int32_t> entry;
     Scale scale;
     double last_eu = std::numeric_limits<double>::quiet_NaN();
-    std::int64_t last_raw = 0;
-    void bind(canopen::OdEntry* e, Scale eu_scale);
+    std::int32_t last_raw = 0;
+    void put(double eu) {
+      if (!(eu == last_eu)) {  // NaN never compares equal: converted anew (to 0)
+        last_eu = eu;
+        last_raw = static_cast<std::int32_t>(to_raw(eu, scale));  // saturated to the INTEGER32 range
+      }
+      entry.set(last_raw);
+    }
   };
-  std::vector<OutputSlot> out_;  ///< by slot
+  std::array<EuReadout, 14> eu_out_{};  ///< by EU readout (EuSlot)
+  /// The raw readouts: the binary set's table entries (INTEGER32) and three UNSIGNED16 words.
+  canopen::BoundEntry<std::int32_t> angle_binary_out_, press_binary_out_, power_binary_out_;
+  canopen::BoundEntry<std::uint16_t> bus_status_out_, discrete_inputs_out_, discrete_outputs_out_;
   sim::Duration cycle_debt_{0};
   bool previous_enable_ = true;
   bool lifeguard_timeout_ = false;

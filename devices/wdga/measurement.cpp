@@ -18,13 +18,14 @@ Measurement::Measurement(canopen::ObjectDictionary& od, const Settings& settings
   config_.physical_resolution = kPhysicalResolution;
   config_.physical_revolutions = kPhysicalRevolutions;
   config_.multiturn = settings.multiturn;
-  position_ = od.entry(obj::kPosition, 0);
-  position_high_ = od.entry(obj::kPositionHigh, 0);
-  speed_ = od.entry(obj::kSpeed, 1);
-  acceleration_ = od.entry(obj::kAcceleration, 1);
-  jerk_ = od.entry(obj::kJerk, 1);
+  range_ = config_.effective_range();
+  position_ = canopen::BoundEntry<std::uint32_t>(od, obj::kPosition, 0);
+  position_high_ = canopen::BoundEntry<std::uint64_t>(od, obj::kPositionHigh, 0);
+  speed_ = canopen::BoundEntry<std::int16_t>(od, obj::kSpeed, 1);
+  acceleration_ = canopen::BoundEntry<std::int16_t>(od, obj::kAcceleration, 1);
+  jerk_ = canopen::BoundEntry<std::int16_t>(od, obj::kJerk, 1);
   status_ = od.entry(obj::kOperatingStatus, 0);
-  offset_view_ = od.entry(obj::kOffset, 0);
+  offset_view_ = canopen::BoundEntry<std::int32_t>(od, obj::kOffset, 0);
   cams_.bind(od);
   work_area_.bind(od);
 }
@@ -38,6 +39,9 @@ void Measurement::load_parameters() {
   speed_numerator_ = od_.get<std::uint16_t>(obj::kSpeedScaling, 1);
   speed_denominator_ = od_.get<std::uint16_t>(obj::kSpeedScaling, 2);
   frequency_limit_ = od_.get<std::uint16_t>(obj::kFrequencyLimit);
+  units_per_rev_ = settings_.speed_physical_units ? static_cast<double>(kPhysicalResolution)
+                                                  : static_cast<double>(config_.effective_units_per_revolution());
+  range_ = config_.effective_range();
   cia406::publish(*status_, config_.operating_parameters);
 }
 
@@ -79,18 +83,18 @@ void Measurement::cycle(sim::Time now) {
 }
 
 void Measurement::publish(sim::Time) {
-  const std::uint64_t x = cia406::output_position(output_count_, offset_, config_);
-  cia406::publish(*position_, static_cast<std::uint32_t>(x));  // 6004h shows the low 32 bits
-  cia406::publish(*position_high_, x);
+  // output_position() with the range worked out when the parameters were loaded.
+  const auto x = static_cast<std::uint64_t>(cia406::floor_mod(output_count_ + offset_, static_cast<Int128>(range_)));
+  position_.set(static_cast<std::uint32_t>(x));  // 6004h shows the low 32 bits
+  position_high_.set(x);
   // Speed in steps/s, scaled by 2106h (truncated), saturated to ±32767 [M §8.9].
   const double v = motion_.speed();
-  cia406::publish(*speed_, cia406::saturate_i16(std::trunc(v * speed_numerator_ / speed_denominator_), -32767, 32767));
-  cia406::publish(*acceleration_, cia406::saturate_i16(std::trunc(motion_.acceleration()), -32767, 32767));
-  cia406::publish(*jerk_, cia406::saturate_i16(std::trunc(motion_.jerk()), -32767, 32767));
-  cia406::publish(*offset_view_, cia406::truncate_i32(offset_));
-  const double units_per_rev = settings_.speed_physical_units ? static_cast<double>(kPhysicalResolution)
-                                                               : static_cast<double>(config_.effective_units_per_revolution());
-  frequency_exceeded_ = std::fabs(v) / units_per_rev > frequency_limit_;
+  // (Truncated toward zero: saturate_i16 with integer bounds gives what it gives for trunc(v).)
+  speed_.set(cia406::saturate_i16(v * speed_numerator_ / speed_denominator_, -32767, 32767));
+  acceleration_.set(cia406::saturate_i16(motion_.acceleration(), -32767, 32767));
+  jerk_.set(cia406::saturate_i16(motion_.jerk(), -32767, 32767));
+  offset_view_.set(cia406::truncate_i32(offset_));
+  frequency_exceeded_ = std::fabs(v) / units_per_rev_ > frequency_limit_;
   cams_.update(static_cast<std::int64_t>(static_cast<std::uint32_t>(x)));
   work_area_.update(static_cast<std::int64_t>(static_cast<std::uint32_t>(x)));
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "devices/canopen/bound_entry.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/profiles/cia406/cam_unit.h"
 #include "devices/profiles/cia406/motion_estimator.h"
@@ -62,14 +63,16 @@ class Measurement {
   bool frequency_exceeded_ = false;
   unsigned filter_constant_ = 1;
   std::uint16_t speed_numerator_ = 1, speed_denominator_ = 1, frequency_limit_ = 0xFFFF;
+  // Derived from config_ whenever it is loaded (it changes nowhere else).
+  double units_per_rev_ = 1.0;  ///< output steps per revolution the frequency limit divides by
+  std::uint64_t range_ = 1;     ///< config_.effective_range()
 
-  canopen::OdEntry* position_ = nullptr;
-  canopen::OdEntry* position_high_ = nullptr;
-  canopen::OdEntry* speed_ = nullptr;
-  canopen::OdEntry* acceleration_ = nullptr;
-  canopen::OdEntry* jerk_ = nullptr;
+  // The process values, published in every cycle (6004h, 600Ch, 6030h, 6040h, 6050h, 6509h).
+  canopen::BoundEntry<std::uint32_t> position_;
+  canopen::BoundEntry<std::uint64_t> position_high_;
+  canopen::BoundEntry<std::int16_t> speed_, acceleration_, jerk_;
+  canopen::BoundEntry<std::int32_t> offset_view_;
   canopen::OdEntry* status_ = nullptr;
-  canopen::OdEntry* offset_view_ = nullptr;
 };
 
 }  // namespace wdga

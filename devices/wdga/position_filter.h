@@ -15,7 +15,8 @@ class PositionFilter {
   cia406::Int128 update(cia406::Int128 s, unsigned constant);
 
  private:
-  static constexpr std::int64_t kOne = 1 << 16;  // fixed point: 16 fractional bits
+  static constexpr int kFractionBits = 16;  // fixed point: 16 fractional bits
+  static constexpr std::int64_t kOne = std::int64_t{1} << kFractionBits;
   cia406::Int128 y_ = 0;
 };
 

@@ -51,42 +51,47 @@ void CamUnit::add_objects(ObjectDictionary& od) {
 }
 
 void CamUnit::bind(ObjectDictionary& od, SdoAbort abort) {
-  state_ = devices::IntegerEntry(od.entry(kState, 1));
-  enable_ = devices::IntegerEntry(od.entry(kEnable, 1));
-  polarity_ = devices::IntegerEntry(od.entry(kPolarity, 1));
+  state_ = canopen::BoundEntry<std::uint8_t>(od, kState, 1);
+  enable_ = canopen::BoundEntry<std::uint8_t>(od, kEnable, 1);
+  polarity_ = canopen::BoundEntry<std::uint8_t>(od, kPolarity, 1);
   for (int k = 0; k < kCams; ++k) {
-    low_[k] = devices::IntegerEntry(od.entry(static_cast<std::uint16_t>(kLowLimit + k), 1));
-    high_[k] = devices::IntegerEntry(od.entry(static_cast<std::uint16_t>(kHighLimit + k), 1));
-    hysteresis_[k] = devices::IntegerEntry(od.entry(static_cast<std::uint16_t>(kHysteresis + k), 1));
-    const OdEntry* high = high_[k].entry();
-    od.add_check(static_cast<std::uint16_t>(kLowLimit + k), 1,
-                 [high, abort](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
-                   if (origin != Origin::Sdo) return SdoAbort::None;
-                   const auto next = canopen::value_as<std::int32_t>(e.type, data);
-                   if (next == e.as<std::int32_t>()) return SdoAbort::None;  // unchanged: always accepted
-                   return next >= high->as<std::int32_t>() ? abort : SdoAbort::None;
-                 });
+    const auto low = static_cast<std::uint16_t>(kLowLimit + k);
+    low_[k] = canopen::BoundEntry<std::int32_t>(od, low, 1);
+    high_[k] = canopen::BoundEntry<std::int32_t>(od, static_cast<std::uint16_t>(kHighLimit + k), 1);
+    hysteresis_[k] = canopen::BoundEntry<std::uint32_t>(od, static_cast<std::uint16_t>(kHysteresis + k), 1);
+    const OdEntry* high = &high_[k].entry();
+    od.add_check(low, 1, [high, abort](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
+      if (origin != Origin::Sdo) return SdoAbort::None;
+      const auto next = canopen::value_as<std::int32_t>(e.type, data);
+      if (next == e.as<std::int32_t>()) return SdoAbort::None;  // unchanged: always accepted
+      return next >= high->as<std::int32_t>() ? abort : SdoAbort::None;
+    });
   }
 }
 
 void CamUnit::reset() {
-  for (auto& c : cams_) c.inside = false;
+  inside_.fill(false);
 }
 
 std::uint8_t CamUnit::update(std::int64_t x) {
-  const auto enabled = enable_.as<std::uint8_t>();
-  const auto inverted = polarity_.as<std::uint8_t>();
-  std::uint8_t state = 0;
+  // Cam::update() on the limits of this cycle, inline; only the switching memory is kept (the
+  // limits are read anew in every cycle, so a value written by SDO or PDO, or reset, acts at once).
+  unsigned inside = 0;  // bit k: cam k's switching memory after this position
   for (int k = 0; k < kCams; ++k) {
-    Cam& c = cams_[k];
-    c.low = low_[k].as<std::int32_t>();
-    c.high = high_[k].as<std::int32_t>();
-    if (c.inside) c.hysteresis = hysteresis_[k].as<std::uint32_t>();  // only a cam inside uses it
-    const bool inside = c.update(x);
-    const auto bit = static_cast<std::uint8_t>(1u << k);
-    if ((enabled & bit) && (inside != ((inverted & bit) != 0))) state |= bit;
+    bool& memory = inside_[static_cast<std::size_t>(k)];
+    const std::int64_t low = low_[k].get(), high = high_[k].get();
+    if (memory) {  // only a cam inside uses its hysteresis
+      const std::uint32_t hysteresis = hysteresis_[k].get();
+      const auto h = static_cast<std::int64_t>(hysteresis > 0x7FFFFFFFu ? 0x7FFFFFFFu : hysteresis);
+      memory = x >= low - h && x <= high + h;
+    } else {
+      memory = x >= low && x <= high;
+    }
+    inside |= static_cast<unsigned>(memory) << k;
   }
-  state_.store(state);
+  // Bit k = enabled and (inside xor inverted).
+  const auto state = static_cast<std::uint8_t>((inside ^ polarity_.get()) & enable_.get());
+  state_.set(state);
   return state;
 }
 

@@ -8,8 +8,8 @@
 #include <array>
 #include <cstdint>
 
+#include "devices/canopen/bound_entry.h"
 #include "devices/canopen/object_dictionary.h"
-#include "devices/entry_value.h"
 
 namespace cia406 {
 
@@ -31,8 +31,9 @@ class CamUnit {
 
   /// Adds the channel-1 objects 6300h..6337h with their CiA 406 types and zero defaults.
   static void add_objects(canopen::ObjectDictionary& od);
-  /// Caches the entries and installs the write rule for low limits: a changed low limit must
-  /// stay below the cam's high limit (else `abort`); rewriting the current value is accepted.
+  /// Binds the entries (of the types add_objects() gives them; throws std::invalid_argument for
+  /// others) and installs the write rule for low limits: a changed low limit must stay below the
+  /// cam's high limit (else `abort`); rewriting the current value is accepted.
   void bind(canopen::ObjectDictionary& od, canopen::SdoAbort abort = canopen::SdoAbort::MaxLessThanMin);
   /// Forgets the switching memory (power-on).
   void reset();
@@ -40,9 +41,11 @@ class CamUnit {
   std::uint8_t update(std::int64_t x);
 
  private:
-  std::array<Cam, kCams> cams_{};
-  devices::IntegerEntry state_, enable_, polarity_;
-  std::array<devices::IntegerEntry, kCams> low_{}, high_{}, hysteresis_{};
+  std::array<bool, kCams> inside_{};  ///< the cams' switching memories (kept whether enabled or not)
+  // Read in every cycle, so a limit written by SDO or PDO, or reset, acts in the next one.
+  canopen::BoundEntry<std::uint8_t> state_, enable_, polarity_;
+  std::array<canopen::BoundEntry<std::int32_t>, kCams> low_{}, high_{};
+  std::array<canopen::BoundEntry<std::uint32_t>, kCams> hysteresis_{};
 };
 
 }  // namespace cia406

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "devices/profiles/cia406/arithmetic.h"
+
 namespace cia406 {
 
 std::int64_t steps_from_metres(double metres, const LinearConfig& c) {
-  const double steps = std::round(metres * 1e9 / static_cast<double>(c.step_nm));
+  const double steps = round_half_away(metres * 1e9 / static_cast<double>(c.step_nm));  // = std::round
   if (!(steps > 0)) return 0;  // also NaN
   return std::min<std::int64_t>(static_cast<std::int64_t>(std::min(steps, 9.0e18)), c.steps - 1);
 }

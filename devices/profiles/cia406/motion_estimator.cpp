@@ -33,7 +33,7 @@ void MotionEstimator::push(std::int64_t position) {
   positions_[next_] = position;
   speeds_[next_] = speed_;
   accels_[next_] = accel_;
-  next_ = (next_ + 1) % window_;
+  if (++next_ == window_) next_ = 0;  // next_ < window_ always: the modulo without a division
 }
 
 }  // namespace cia406

@@ -1,7 +1,5 @@
 #include "devices/profiles/cia406/rotary_position.h"
 
-#include <cmath>
-
 namespace cia406 {
 
 std::uint64_t RotaryConfig::effective_units_per_revolution() const {
@@ -11,25 +9,6 @@ std::uint64_t RotaryConfig::effective_units_per_revolution() const {
 std::uint64_t RotaryConfig::effective_range() const {
   if (scaling()) return total_measuring_range;
   return multiturn ? static_cast<std::uint64_t>(physical_resolution) * physical_revolutions : physical_resolution;
-}
-
-std::int64_t physical_count(double revolutions, const RotaryConfig& c) {
-  const auto p = static_cast<std::int64_t>(std::floor(revolutions * c.physical_resolution));
-  if (c.multiturn) return p;
-  return static_cast<std::int64_t>(floor_mod(p, c.physical_resolution));
-}
-
-Int128 scaled_count(std::int64_t physical, const RotaryConfig& c) {
-  const Int128 res = c.physical_resolution;
-  Int128 directed = c.counter_clockwise() ? -static_cast<Int128>(physical) : static_cast<Int128>(physical);
-  if (!c.multiturn) directed = floor_mod(directed, res);  // a singleturn count restarts every turn
-  if (!c.scaling()) return directed;
-  return floor_div(directed * static_cast<Int128>(c.measuring_units_per_revolution), res);
-}
-
-Int128 within_turn(Int128 unwrapped_scaled, const RotaryConfig& c) {
-  if (c.multiturn) return unwrapped_scaled;
-  return floor_mod(unwrapped_scaled, static_cast<Int128>(c.effective_units_per_revolution()));
 }
 
 std::uint64_t output_position(Int128 scaled, Int128 offset, const RotaryConfig& c) {

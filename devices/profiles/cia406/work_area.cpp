@@ -26,14 +26,14 @@ void WorkArea::add_objects(canopen::ObjectDictionary& od, std::int32_t default_l
 }
 
 void WorkArea::bind(canopen::ObjectDictionary& od) {
-  state_ = devices::IntegerEntry(od.entry(kState, 1));
-  low_ = devices::IntegerEntry(od.entry(kLowLimit, 1));
-  high_ = devices::IntegerEntry(od.entry(kHighLimit, 1));
+  state_ = canopen::BoundEntry<std::uint8_t>(od, kState, 1);
+  low_ = canopen::BoundEntry<std::int32_t>(od, kLowLimit, 1);
+  high_ = canopen::BoundEntry<std::int32_t>(od, kHighLimit, 1);
 }
 
 std::uint8_t WorkArea::update(std::int64_t x) {
-  const std::uint8_t s = work_area_state(x, low_.as<std::int32_t>(), high_.as<std::int32_t>());
-  state_.store(s);
+  const std::uint8_t s = work_area_state(x, low_.get(), high_.get());
+  state_.set(s);
   return s;
 }
 

@@ -5,8 +5,8 @@
 
 #include <cstdint>
 
+#include "devices/canopen/bound_entry.h"
 #include "devices/canopen/object_dictionary.h"
-#include "devices/entry_value.h"
 
 namespace cia406 {
 
@@ -26,7 +26,9 @@ class WorkArea {
   std::uint8_t update(std::int64_t x);
 
  private:
-  devices::IntegerEntry state_, low_, high_;
+  // Read in every cycle, so a limit written by SDO or PDO, or reset, acts in the next one.
+  canopen::BoundEntry<std::uint8_t> state_;
+  canopen::BoundEntry<std::int32_t> low_, high_;
 };
 
 }  // namespace cia406

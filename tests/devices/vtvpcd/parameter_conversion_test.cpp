@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
 using namespace vtvpcd;
 
 TEST(ParameterConversion, ManualExamplePowerCmd4PercentIs1311) {
@@ -48,4 +53,27 @@ TEST(ParameterConversion, SaturatesToTheBusInteger) {
   EXPECT_EQ(to_raw(-1e12, kScalePercent), -2147483647 - 1);
   EXPECT_EQ(to_raw(1e9, kScaleOne, 0, 65535), 65535);
   EXPECT_EQ(to_raw(std::nan(""), kScalePercent), 0);
+}
+
+TEST(ParameterConversion, RoundingIsTheFloorFormulaBitForBit) {
+  // round_half_away() truncates instead of calling floor(): the same double, sign of zero included.
+  auto reference = [](double x) { return x < 0 ? -std::floor(-x + 0.5) : std::floor(x + 0.5); };
+  std::vector<double> xs = {0.0, -0.0, 0.49999999999999994, 0.5, -0.5, 1.5, -1.5, 2.5, 16383.5, -16383.5,
+                            4503599627370495.5, 4503599627370496.0, 9007199254740993.0, 9.2233720368547e18,
+                            9223372036854775808.0, -9223372036854775808.0, 1e300, -1e300,
+                            std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                            std::numeric_limits<double>::denorm_min(), -std::numeric_limits<double>::denorm_min()};
+  std::uint64_t state = 12345;
+  for (int i = 0; i < 100000; ++i) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    const double unit = static_cast<double>(state >> 11) / 9007199254740992.0;  // [0, 1)
+    xs.push_back((unit - 0.5) * std::pow(10.0, static_cast<double>(i % 24) - 4.0));
+    xs.push_back(std::nextafter(std::round(xs.back()) + 0.5, 0.0));
+  }
+  for (double x : xs) {
+    const double got = round_half_away(x), want = reference(x);
+    EXPECT_EQ(std::signbit(got), std::signbit(want)) << x;
+    EXPECT_EQ(got, want) << x;
+  }
+  EXPECT_TRUE(std::isnan(round_half_away(std::nan(""))));
 }

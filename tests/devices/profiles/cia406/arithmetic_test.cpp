@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -39,6 +41,29 @@ TEST(Arithmetic, FloorDivisionAndModuloOnEitherSideOf64Bits) {
   EXPECT_EQ(floor_div(-1, 65536), -1);
   EXPECT_EQ(floor_mod(-1, 16384), 16383);
   EXPECT_EQ(floor_div(INT64_MIN, 1), INT64_MIN);
+}
+
+TEST(Arithmetic, RoundingIsTheLibrarysBitForBit) {
+  std::vector<double> xs = {0.0, -0.0, 0.5, -0.5, 1.5, -1.5, 2.5, -2.5, 0.49999999999999994, -0.49999999999999994,
+                            0.3, -0.3, 4503599627370495.5, -4503599627370495.5, 4503599627370496.0, 9007199254740993.0,
+                            1e300, -1e300, std::numeric_limits<double>::denorm_min(),
+                            std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  std::mt19937_64 rng(1100);
+  for (int i = 0; i < 100000; ++i) {
+    const double unit = static_cast<double>(rng() >> 11) / 9007199254740992.0 - 0.5;
+    xs.push_back(unit * std::pow(10.0, static_cast<double>(i % 20) - 3.0));
+    xs.push_back(std::floor(xs.back()) + 0.5);
+    xs.push_back(std::nextafter(xs.back(), 0.0));
+  }
+  for (double x : xs) {
+    const double r = round_half_away(x);
+    ASSERT_EQ(r, std::round(x)) << x;
+    ASSERT_EQ(std::signbit(r), std::signbit(std::round(x))) << x;
+    if (std::fabs(x) < 9e18) {
+      ASSERT_EQ(llround_half_away(x), std::llround(x)) << x;
+    }
+  }
+  EXPECT_TRUE(std::isnan(round_half_away(std::nan(""))));
 }
 
 }  // namespace

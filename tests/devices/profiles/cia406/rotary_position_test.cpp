@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <random>
+#include <vector>
 
 namespace cia406 {
 namespace {
@@ -91,6 +94,42 @@ TEST(RotaryPositionProperty, MatchesTheFormulaForRandomConfigurations) {
     const auto move = static_cast<std::int64_t>(rnd(0, 1ull << 40)) - (1ll << 39);
     const Int128 s2 = scaled_count(p + move, c);
     ASSERT_EQ(output_position(s2, offset, c), static_cast<std::uint64_t>(ref_mod(s2 + offset, range)));
+  }
+}
+
+}  // namespace
+}  // namespace cia406
+
+namespace cia406 {
+namespace {
+
+TEST(RotaryPosition, PowerOfTwoResolutionScalesAsTheFloorDivision) {
+  // scaled_count() shifts for a power-of-two resolution: the same count as floor(S·MUR/res) for
+  // either sign, beyond 64 bits, and for a resolution that is no power of two.
+  std::mt19937_64 rng(6001);
+  for (std::uint32_t res : {16384u, 1u, 2u, 4096u, 1u << 31, 10000u, 3u}) {
+    for (int i = 0; i < 3000; ++i) {
+      RotaryConfig c = config(true, kScalingFunction, static_cast<std::uint32_t>(rng() >> (i % 40)) | 1, 1ull << 30);
+      c.physical_resolution = res;
+      const auto physical = static_cast<std::int64_t>(rng()) >> (i % 60);
+      if (i % 2) c.operating_parameters |= kCodeSequenceCounterClockwise;
+      const Int128 directed = c.counter_clockwise() ? -static_cast<Int128>(physical) : static_cast<Int128>(physical);
+      ASSERT_EQ(scaled_count(physical, c), ref_fdiv(directed * c.measuring_units_per_revolution, res)) << res << " " << i;
+    }
+  }
+}
+
+TEST(Arithmetic, SaturatingATruncatedValueIsSaturatingTheValue) {
+  // The WDGA publishes speed, acceleration and jerk as saturate_i16(v) with integer bounds, which
+  // is saturate_i16(trunc(v)) without the library call.
+  std::mt19937_64 rng(6030);
+  std::vector<double> vs = {0.0, -0.0, 0.5, -0.5, 32766.9, 32767.0, 32767.5, 32768.0, -32766.9, -32767.0,
+                            -32767.5, -32768.0, -32768.5, 1e300, -1e300, std::nan(""),
+                            std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+  for (int i = 0; i < 20000; ++i) vs.push_back((static_cast<double>(rng() >> 11) / 9007199254740992.0 - 0.5) * 140000.0);
+  for (double v : vs) {
+    EXPECT_EQ(saturate_i16(v, -32767, 32767), saturate_i16(std::trunc(v), -32767, 32767)) << v;
+    EXPECT_EQ(saturate_i16(v), saturate_i16(std::trunc(v))) << v;
   }
 }
 
