@@ -53,6 +53,8 @@ class Emergency {
 
   void reset_communication();  ///< 0x1003 handling per policy, queue flushed
   void process(sim::Time now);  ///< sends queued frames when the inhibit time allows
+  /// process() has nothing to do: no frame queued.
+  bool idle() const { return queue_.empty(); }
 
  private:
   struct ActiveError {

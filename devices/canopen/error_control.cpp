@@ -32,10 +32,6 @@ void ErrorControl::bind_objects() {
   }
 }
 
-std::uint16_t ErrorControl::heartbeat_period_ms() const {
-  return heartbeat_time_ ? heartbeat_time_->as<std::uint16_t>() : 0;
-}
-
 std::uint32_t ErrorControl::life_time_ms() const {
   if (!guard_time_ || !life_time_factor_) return 0;
   return guard_time_->as<std::uint32_t>() * life_time_factor_->as<std::uint32_t>();
@@ -65,14 +61,17 @@ void ErrorControl::on_frame(const sim::CanFrame& frame, sim::Time now) {
 
 void ErrorControl::process(sim::Time now) {
   const std::uint16_t period = heartbeat_period_ms();
-  if (period != 0 && !node_.policy().error_control.guard_while_heartbeat) armed_ = false;  // heartbeat replaces guarding
-  if (period != 0 && now >= next_heartbeat_) {
-    node_.send(sim::CanFrame::data_frame(0x700u + node_.node_id(), {static_cast<std::uint8_t>(node_.nmt_state())}));
-    next_heartbeat_ += sim::milliseconds(period);
-    if (next_heartbeat_ <= now) next_heartbeat_ = now + sim::milliseconds(period);
+  if (period != 0) {
+    if (!node_.policy().error_control.guard_while_heartbeat) armed_ = false;  // heartbeat replaces guarding
+    if (now >= next_heartbeat_) {
+      node_.send(sim::CanFrame::data_frame(0x700u + node_.node_id(), {static_cast<std::uint8_t>(node_.nmt_state())}));
+      next_heartbeat_ += sim::milliseconds(period);
+      if (next_heartbeat_ <= now) next_heartbeat_ = now + sim::milliseconds(period);
+    }
   }
+  if (!armed_ || in_error_) return;  // the life time is read only while guarding is armed
   const std::uint32_t life = life_time_ms();
-  if (armed_ && !in_error_ && life != 0 && now - last_guard_ > sim::milliseconds(life)) {
+  if (life != 0 && now - last_guard_ > sim::milliseconds(life)) {
     in_error_ = true;
     node_.communication_error(CommError::LifeGuarding);
   }

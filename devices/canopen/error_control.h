@@ -2,7 +2,11 @@
 // node guarding with toggle bit plus life guarding (0x100C × 0x100D), all on COB-ID 0x700+N.
 #pragma once
 
+#include <bit>
 #include <cstdint>
+#include <cstring>
+
+#include "devices/canopen/object_dictionary.h"
 
 #include "sim/can_frame.h"
 #include "sim/time.h"
@@ -10,7 +14,6 @@
 namespace canopen {
 
 class Node;
-class OdEntry;
 
 class ErrorControl {
  public:
@@ -19,10 +22,24 @@ class ErrorControl {
 
   void on_frame(const sim::CanFrame& frame, sim::Time now);  ///< frames on 0x700+N
   void process(sim::Time now);
+  /// process() has nothing to do at `now`: guarding is not armed and no heartbeat is due (a
+  /// heartbeat is due when its time has come and the period, read then, is not 0).
+  bool idle(sim::Time now) const { return !armed_ && (now < next_heartbeat_ || heartbeat_period_ms() == 0); }
   /// After boot-up: toggle 0, guarding disarmed, first heartbeat one period from `now`.
   void reset_communication(sim::Time now);
 
-  std::uint16_t heartbeat_period_ms() const;
+  /// 0x1017 (0 = no heartbeat). Read every tick: a plain load when it has its standard type.
+  std::uint16_t heartbeat_period_ms() const {
+    if (!heartbeat_time_) return 0;
+    if constexpr (std::endian::native == std::endian::little) {
+      if (heartbeat_time_->type == DataType::Unsigned16 && heartbeat_time_->value.size() == 2) {
+        std::uint16_t v;
+        std::memcpy(&v, heartbeat_time_->value.data(), 2);
+        return v;
+      }
+    }
+    return heartbeat_time_->as<std::uint16_t>();
+  }
   bool life_guarding_armed() const { return armed_; }
   bool life_guarding_error() const { return in_error_; }
 

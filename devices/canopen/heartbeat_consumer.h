@@ -22,6 +22,8 @@ class HeartbeatConsumer {
   std::vector<std::uint8_t> producers() const;
   void on_frame(const sim::CanFrame& frame, sim::Time now);
   void process(sim::Time now);
+  /// process() has nothing to do: no producer is watched.
+  bool idle() const { return watches_.empty(); }
   bool timed_out(std::uint8_t producer) const;
   bool any_timed_out() const;
 

@@ -68,6 +68,8 @@ class LssSlave {
   void power_on();
   void on_frame(const sim::CanFrame& frame, sim::Time now);
   void process(sim::Time now);
+  /// process() has nothing to do: no answer held back, no bit-rate switch under way.
+  bool idle() const { return !held_answer_ && !switching_; }
 
   // The configuration services without the protocol, for devices that also expose node-ID and
   // bit rate as objects (the same non-volatile cells as LSS). Return the CiA 305 error code.

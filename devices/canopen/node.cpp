@@ -56,8 +56,7 @@ unsigned Node::bit_rate_kbit() const {
   return lss_bit_rate_kbit(lss_->active_bit_rate());
 }
 
-bool Node::on_bus_rate() const {
-  if (!bus_ || bus_->bit_rate_kbit() == 0) return true;
+bool Node::own_rate_matches_bus() const {
   const unsigned own = bit_rate_kbit();
   return own == 0 || own == bus_->bit_rate_kbit();
 }
@@ -88,11 +87,13 @@ void Node::power_on(sim::Time now) {
   reset_application();
   reset_communication();
   boot_due_ = now + policy_.nmt.boot_delay;
+  refresh_rx_gate();
 }
 
 void Node::power_off() {
   powered_ = false;
   boot_pending_ = false;
+  refresh_rx_gate();
   nmt_state_ = NmtState::Initialising;
   sdo_->reset();
 }
@@ -114,11 +115,13 @@ void Node::reset_communication() {
   app().after_reset_communication();
   rebuild_dispatch();
   boot_pending_ = true;
+  refresh_rx_gate();
   boot_due_ = now_ + policy_.nmt.reset_delay;
 }
 
 void Node::send_boot_up() {
   boot_pending_ = false;
+  refresh_rx_gate();
   if (node_id_ == kUnconfigured || node_id_ == 0 || node_id_ > 127) return;  // LSS only until configured
   const NmtState from = nmt_state_;
   nmt_state_ = NmtState::PreOperational;  // boot-up is sent on the transition (EMCY allowed after)
@@ -212,28 +215,65 @@ void Node::rebuild_dispatch() {
 }
 
 void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
+  // Every frame on the bus comes here, most of them for other nodes (Route::None): that path and
+  // the SYNC's make no call but the one they need; the other routes go through dispatch().
+  if (rx_plain_) {  // the usual state: what is left of the checks below
+    now_ = now;
+    if (silent() || !on_bus_rate()) return;
+    ++stats_.rx_frames;
+    const RouteEntry route = frame.extended ? extended_route(frame.id) : routes_[frame.id & 0x7FF];
+    if (route.route == Route::None) {
+      ++stats_.ignored_frames;
+      return;
+    }
+    if (route.route == Route::Sync) {
+      sync_->on_frame(frame, now);
+      return;
+    }
+    dispatch(route, frame, now);
+    return;
+  }
   if (!powered_) return;
   now_ = now;
   if (silent() || bus_off_ || !on_bus_rate()) return;
   if (detecting_bit_rate_) {
-    // The frame only serves to measure the bit rate (it is not processed); boot-up follows.
-    detecting_bit_rate_ = false;
-    detected_kbit_ = bus_ ? bus_->bit_rate_kbit() : 0;
-    boot_due_ = now + policy_.nmt.boot_delay;
+    detect_bit_rate(now);
     return;
   }
   ++stats_.rx_frames;
-  RouteEntry route;
-  if (!frame.extended) {
-    route = routes_[frame.id & 0x7FF];
-  } else {
-    const std::uint32_t key = frame.id | 0x80000000u;
-    for (const auto& r : extended_routes_)
-      if (r.id == key) route = r.entry;
+  const RouteEntry route = frame.extended ? extended_route(frame.id) : routes_[frame.id & 0x7FF];
+  if (route.route != Route::Lss) {
+    if (node_id_ < 1 || node_id_ > 127) return;  // unconfigured: LSS only
+    if (boot_pending_) return;                    // still initialising
+    if (route.route == Route::None) {
+      ++stats_.ignored_frames;
+      return;
+    }
+    if (route.route == Route::Sync) {
+      sync_->on_frame(frame, now);
+      return;
+    }
   }
-  const bool configured = node_id_ >= 1 && node_id_ <= 127;
-  if (!configured && route.route != Route::Lss) return;  // unconfigured: LSS only
-  if (boot_pending_ && route.route != Route::Lss) return;  // still initialising
+  dispatch(route, frame, now);
+}
+
+void Node::detect_bit_rate(sim::Time now) {
+  // The frame only serves to measure the bit rate (it is not processed); boot-up follows.
+  detecting_bit_rate_ = false;
+  refresh_rx_gate();
+  detected_kbit_ = bus_ ? bus_->bit_rate_kbit() : 0;
+  boot_due_ = now + policy_.nmt.boot_delay;
+}
+
+Node::RouteEntry Node::extended_route(std::uint32_t id) const {
+  RouteEntry route;
+  const std::uint32_t key = id | 0x80000000u;
+  for (const auto& r : extended_routes_)
+    if (r.id == key) route = r.entry;
+  return route;
+}
+
+void Node::dispatch(RouteEntry route, const sim::CanFrame& frame, sim::Time now) {
   switch (route.route) {
     case Route::Nmt: nmt_->on_frame(frame); break;
     case Route::Sync: sync_->on_frame(frame, now); break;
@@ -258,6 +298,7 @@ void Node::on_error_state(sim::ErrorState state, sim::Time now) {
   if (now > now_) now_ = now;
   if (state == sim::ErrorState::BusOff) {
     bus_off_ = true;
+    refresh_rx_gate();
     return;
   }
   const auto& p = policy_.error_control;
@@ -268,6 +309,7 @@ void Node::on_error_state(sim::ErrorState state, sim::Time now) {
   }
   if (previous == sim::ErrorState::BusOff) {
     bus_off_ = false;
+    refresh_rx_gate();
     communication_error(CommError::BusOffRecovered);
   }
 }
@@ -275,16 +317,18 @@ void Node::on_error_state(sim::ErrorState state, sim::Time now) {
 void Node::step(sim::Time now, sim::Duration dt) {
   if (!powered_) return;
   now_ = now;
-  if (lss_) lss_->process(now);  // runs while silent: it ends an "activate bit timing" pause
+  // Services with nothing to do are skipped by an inline check (most ticks: all but the
+  // heartbeat timer, the application and the PDOs).
+  if (lss_ && !lss_->idle()) lss_->process(now);  // runs while silent: it ends an "activate bit timing" pause
   if (silent() || detecting_bit_rate_) return;
   if (boot_pending_ && now >= boot_due_) send_boot_up();
   if (boot_pending_ || nmt_state_ == NmtState::Initialising) return;
-  sdo_->process(now);
-  error_control_->process(now);
-  heartbeat_consumer_->process(now);
+  if (!sdo_->idle()) sdo_->process(now);
+  if (!error_control_->idle(now)) error_control_->process(now);
+  if (!heartbeat_consumer_->idle()) heartbeat_consumer_->process(now);
   app().process(now, dt);
   pdo_->process(now);
-  emcy_->process(now);
+  if (!emcy_->idle()) emcy_->process(now);
 }
 
 }  // namespace canopen

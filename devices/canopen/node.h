@@ -89,7 +89,10 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   /// Changes the NMT state directly (e.g. error behaviour 0x1029 → Pre-operational).
   void set_nmt_state(NmtState state);
   /// Bus-off (CAN controller fault): no frame in or out, the device keeps running.
-  void set_bus_off(bool off) { bus_off_ = off; }
+  void set_bus_off(bool off) {
+    bus_off_ = off;
+    refresh_rx_gate();
+  }
   bool bus_off() const { return bus_off_; }
   /// Waiting for automatic bit-rate detection (LssPolicy::automatic_bit_rate_index).
   bool detecting_bit_rate() const { return detecting_bit_rate_; }
@@ -127,10 +130,20 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   };
 
   void add_route(std::uint32_t cob_id, Route r, std::uint8_t index = 0);
+  RouteEntry extended_route(std::uint32_t id) const;
+  void dispatch(RouteEntry route, const sim::CanFrame& frame, sim::Time now);
+  void detect_bit_rate(sim::Time now);
+  /// Recomputes rx_plain_; called wherever one of the flags it sums up changes.
+  void refresh_rx_gate() {
+    rx_plain_ = powered_ && !bus_off_ && !detecting_bit_rate_ && node_id_ >= 1 && node_id_ <= 127 && !boot_pending_;
+  }
   void reset_application();
   void reset_communication();
   void send_boot_up();
-  bool on_bus_rate() const;
+  /// The node may use the bus: it has no rate of its own to compare, or it matches the bus's.
+  /// Inline: every frame in and out asks, and a bus without a rate answers at once.
+  bool on_bus_rate() const { return !bus_ || bus_->bit_rate_kbit() == 0 || own_rate_matches_bus(); }
+  bool own_rate_matches_bus() const;
 
   std::string name_;
   ObjectDictionary od_;
@@ -146,6 +159,9 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   bool bus_off_ = false;
   sim::ErrorState controller_state_ = sim::ErrorState::Active;
   bool detecting_bit_rate_ = false;
+  /// Powered, not bus-off, not detecting the bit rate, configured and booted: a received frame
+  /// needs only the time-dependent checks (silent, bit rate) before its route (on_frame()).
+  bool rx_plain_ = false;
   unsigned detected_kbit_ = 0;
 
   sim::Bus* bus_ = nullptr;

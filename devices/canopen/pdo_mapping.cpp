@@ -16,6 +16,7 @@ SdoAbort resolve_mapping_entry(ObjectDictionary& od, std::uint32_t value, PdoDir
     if (dir != PdoDirection::Receive || !rules.dummy_mapping) return SdoAbort::NotMappable;
     if (type_size(static_cast<DataType>(index)) * 8 != bits) return rules.length_mismatch;
     out.entry = nullptr;
+    out.sign_extend = false;
     return SdoAbort::None;
   }
   OdEntry* e = od.entry(index, sub);
@@ -24,6 +25,7 @@ SdoAbort resolve_mapping_entry(ObjectDictionary& od, std::uint32_t value, PdoDir
   if (dir == PdoDirection::Transmit && !e->readable()) return SdoAbort::NotMappable;
   if (e->bit_length() != bits && !rules.width_conversion) return rules.length_mismatch;
   out.entry = e;
+  out.sign_extend = is_signed_integer(e->type);
   return SdoAbort::None;
 }
 
@@ -44,27 +46,6 @@ SdoAbort resolve_mapping(ObjectDictionary& od, std::uint16_t mapping_index, std:
   }
   out.length = static_cast<std::uint8_t>(total);
   return SdoAbort::None;
-}
-
-void pack_pdo(const PdoMapping& m, std::span<std::uint8_t, 8> out) {
-  // Every TPDO on every SYNC: byte loops over at most 8 bytes, no library calls.
-  std::uint8_t* dst = out.data();
-  std::size_t pos = 0;
-  for (const auto& o : m.objects) {
-    std::size_t i = 0;
-    if (o.entry) {
-      const std::uint8_t* v = o.entry->value.data();
-      const std::size_t n = std::min<std::size_t>(o.bytes, o.entry->value.size());
-      for (; i < n; ++i) dst[pos + i] = v[i];
-      // Width conversion: a narrow object in a wide slot is sign- or zero-extended.
-      const std::uint8_t fill = (n > 0 && is_signed_integer(o.entry->type) && (v[n - 1] & 0x80)) ? 0xFF : 0x00;
-      for (; i < o.bytes; ++i) dst[pos + i] = fill;
-    } else {
-      for (; i < o.bytes; ++i) dst[pos + i] = 0;
-    }
-    pos += o.bytes;
-  }
-  for (; pos < 8; ++pos) dst[pos] = 0;
 }
 
 }  // namespace canopen

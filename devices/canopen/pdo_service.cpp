@@ -1,6 +1,8 @@
 #include "devices/canopen/pdo_service.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 
 #include "devices/canopen/emergency.h"
 #include "devices/canopen/node.h"
@@ -14,6 +16,20 @@ constexpr std::uint32_t kInvalid = 0x80000000u, kNoRtr = 0x40000000u, kExtended 
 constexpr std::uint16_t kEmcyRpdoShort = 0x8210, kEmcyRpdoLong = 0x8220, kEmcyRpdoTimeout = 0x8250;
 
 bool external(Origin o) { return o == Origin::Sdo; }
+
+/// An UNSIGNED16 communication parameter (inhibit time, event timer), read on every transmission
+/// and tick: a plain load when the entry has its standard type, else the general conversion.
+[[gnu::always_inline]] inline std::uint16_t u16_value(const OdEntry* e) {
+  if (!e) return 0;
+  if constexpr (std::endian::native == std::endian::little) {
+    if (e->type == DataType::Unsigned16 && e->value.size() == 2) {
+      std::uint16_t v;
+      std::memcpy(&v, e->value.data(), 2);
+      return v;
+    }
+  }
+  return e->as<std::uint16_t>();
+}
 }  // namespace
 
 PdoService::PdoService(Node& node) : node_(node) {}
@@ -51,6 +67,34 @@ void PdoService::bind_objects() {
       t.event_timer = od.entry(comm, 5);
       tpdos_.push_back(t);
       install_checks(comm, map, PdoDirection::Transmit);
+    }
+  }
+  rebuild_lists();
+}
+
+void PdoService::rebuild_lists() {
+  sync_tpdos_.clear();
+  async_tpdos_.clear();
+  for (std::size_t i = 0; i < tpdos_.size(); ++i) {
+    const Tpdo& t = tpdos_[i];
+    if (!t.valid || t.mapping.length == 0) continue;
+    if (t.type <= 240 || t.type == 252) sync_tpdos_.push_back(static_cast<std::uint16_t>(i));
+    if (t.type >= 254) async_tpdos_.push_back(static_cast<std::uint16_t>(i));
+  }
+  ++lists_version_;
+}
+
+template <typename Visit>
+void PdoService::walk(const std::vector<std::uint16_t>& list, Visit&& visit) {
+  // `visit` re-checks the conditions, so when a visit rebuilt the lists (a device reacting to
+  // a sample or an RPDO by remapping), the walk goes on over every later TPDO as the plain loop did.
+  const std::uint32_t version = lists_version_;
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::size_t i = list[k];
+    visit(tpdos_[i]);
+    if (lists_version_ != version) {
+      for (std::size_t j = i + 1; j < tpdos_.size(); ++j) visit(tpdos_[j]);
+      return;
     }
   }
 }
@@ -188,6 +232,7 @@ void PdoService::reload() {
     r.latched = false;
   }
   for (auto& t : tpdos_) load(t);
+  rebuild_lists();
 }
 
 std::vector<PdoService::Route> PdoService::rpdo_routes() const {
@@ -216,13 +261,9 @@ int PdoService::rpdo_length(int number) const {
   return -1;
 }
 
-std::uint16_t PdoService::event_timer_ms(const Pdo& p) const {
-  return p.event_timer ? p.event_timer->as<std::uint16_t>() : 0;
-}
+std::uint16_t PdoService::event_timer_ms(const Pdo& p) const { return u16_value(p.event_timer); }
 
-std::uint16_t PdoService::inhibit_100us(const Pdo& p) const {
-  return p.inhibit_time ? p.inhibit_time->as<std::uint16_t>() : 0;
-}
+std::uint16_t PdoService::inhibit_100us(const Pdo& p) const { return u16_value(p.inhibit_time); }
 
 // ---- receive ------------------------------------------------------------------------------------
 
@@ -247,12 +288,14 @@ void PdoService::on_rpdo(int number, const sim::CanFrame& frame, sim::Time now) 
   }
   if (event_timer_ms(r) != 0) {
     r.deadline_armed = true;
+    any_deadline_armed_ = true;
     r.last_rx = now;
     emcy.clear(kEmcyRpdoTimeout);
   }
   std::copy(frame.data.begin(), frame.data.end(), r.buffer.begin());
   if (r.type <= 240) {
     r.latched = true;  // synchronous: takes effect at the next SYNC
+    any_latched_ = true;
     return;
   }
   apply_rpdo(r);
@@ -301,7 +344,8 @@ const PdoPolicy::AsyncTriggers* PdoService::async_triggers(const Tpdo& t) const 
 void PdoService::sample(Tpdo& t, std::array<std::uint8_t, 8>& out) {
   node_.app().before_tpdo(t.number);
   for (const auto& m : t.mapping.objects) {
-    if (m.entry) (void)node_.od().read(*m.entry, Origin::Pdo);
+    // read() only checks access and runs the hooks: without hooks it does nothing.
+    if (m.entry && !m.entry->read_hooks.empty()) (void)node_.od().read(*m.entry, Origin::Pdo);
   }
   pack_pdo(t.mapping, out);
 }
@@ -353,6 +397,7 @@ void PdoService::set_active(PdoDirection dir, int number, bool active) {
       t.event_pending = false;
     }
   }
+  rebuild_lists();
   node_.rebuild_dispatch();
 }
 
@@ -417,10 +462,19 @@ void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time n
 
 void PdoService::on_sync(std::uint8_t counter, sim::Time now) {
   if (!pdo_allowed(node_.nmt_state())) return;
-  for (auto& r : rpdos_)
-    if (r.valid && r.latched) apply_rpdo(r);
-  for (auto& t : tpdos_) {
-    if (!t.valid || t.mapping.length == 0) continue;
+  if (any_latched_) {
+    any_latched_ = false;  // an RPDO latched again while these are applied sets it anew
+    for (auto& r : rpdos_) {
+      if (!r.latched) continue;
+      if (r.valid) {
+        apply_rpdo(r);
+      } else {
+        any_latched_ = true;  // kept, as the plain loop kept it, should the PDO become valid
+      }
+    }
+  }
+  walk(sync_tpdos_, [this, counter, now](Tpdo& t) {
+    if (!t.valid || t.mapping.length == 0) return;
     if (t.type == 0) {
       std::array<std::uint8_t, 8> data{};
       sample(t, data);
@@ -430,7 +484,7 @@ void PdoService::on_sync(std::uint8_t counter, sim::Time now) {
         // CiA 301: with a SYNC counter and a start value, the SYNC carrying that value is the
         // first one counted; the PDO goes out on it and on every type-th SYNC after it.
         if (counter != 0 && t.sync_start != 0) {
-          if (counter != t.sync_start) continue;
+          if (counter != t.sync_start) return;
           t.sync_count = static_cast<std::uint8_t>(t.type - 1);
         }
         t.awaiting_start = false;
@@ -445,7 +499,7 @@ void PdoService::on_sync(std::uint8_t counter, sim::Time now) {
       sample(t, t.sampled);
       t.has_sample = true;
     }
-  }
+  });
 }
 
 void PdoService::on_enter_operational(sim::Time now) {
@@ -474,17 +528,26 @@ void PdoService::on_enter_operational(sim::Time now) {
 
 void PdoService::process(sim::Time now) {
   if (!pdo_allowed(node_.nmt_state())) return;
-  for (auto& r : rpdos_) {
-    if (!r.valid || !r.deadline_armed) continue;
-    const auto et = event_timer_ms(r);
-    if (et != 0 && now - r.last_rx > sim::milliseconds(et)) {
-      r.deadline_armed = false;  // one EMCY per timeout; re-armed by the next reception
-      node_.emergency().raise(kEmcyRpdoTimeout, node_.policy().error_control.communication_error_register);
+  if (any_deadline_armed_) {
+    any_deadline_armed_ = false;  // set again below for every deadline still running
+    for (auto& r : rpdos_) {
+      if (!r.deadline_armed) continue;
+      if (!r.valid) {
+        any_deadline_armed_ = true;  // still armed: checked again once the PDO is valid
+        continue;
+      }
+      const auto et = event_timer_ms(r);
+      if (et != 0 && now - r.last_rx > sim::milliseconds(et)) {
+        r.deadline_armed = false;  // one EMCY per timeout; re-armed by the next reception
+        node_.emergency().raise(kEmcyRpdoTimeout, node_.policy().error_control.communication_error_register);
+      } else {
+        any_deadline_armed_ = true;
+      }
     }
   }
-  for (auto& t : tpdos_) {
+  walk(async_tpdos_, [this, now](Tpdo& t) {
     const auto* trig = async_triggers(t);
-    if (!trig || !t.valid || t.mapping.length == 0) continue;
+    if (!trig || !t.valid || t.mapping.length == 0) return;
     if (trig->on_timer) {
       const auto et = event_timer_ms(t);
       if (et != 0 && now >= t.next_timer) {
@@ -497,8 +560,9 @@ void PdoService::process(sim::Time now) {
       sample(t, data);
       if (!t.sent_once || data != t.last_sent) t.event_pending = true;
     }
-    try_send_event(t, now);
-  }
+    // try_send_event() does nothing unless an event waits and the inhibit time has run out.
+    if (t.event_pending && now >= t.inhibit_until) try_send_event(t, now);
+  });
 }
 
 }  // namespace canopen

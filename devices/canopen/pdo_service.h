@@ -97,6 +97,13 @@ class PdoService {
     bool has_sample = false;
   };
 
+  /// TPDOs by position in tpdos_, ascending: those on_sync() acts on (valid, mapped, type 0-240
+  /// or 252) and those process() acts on (valid, mapped, type 254/255). Rebuilt after every
+  /// load() (reload(), set_active()): those are the only places a TPDO's validity, mapping or type
+  /// change, so walking a list visits exactly the TPDOs a walk over all of them would act on.
+  void rebuild_lists();
+  template <typename Visit>
+  void walk(const std::vector<std::uint16_t>& list, Visit&& visit);
   void load(Pdo& p, PdoDirection dir);
   void load(Tpdo& t);  ///< load(t, Transmit) plus the TPDO-only SYNC start value
   void install_checks(std::uint16_t comm_index, std::uint16_t map_index, PdoDirection dir);
@@ -113,6 +120,11 @@ class PdoService {
   Node& node_;
   std::vector<Rpdo> rpdos_;
   std::vector<Tpdo> tpdos_;
+  std::vector<std::uint16_t> sync_tpdos_;
+  std::vector<std::uint16_t> async_tpdos_;
+  std::uint32_t lists_version_ = 0;  ///< bumped by rebuild_lists(): a walk notices a rebuild under it
+  bool any_latched_ = false;         ///< some RPDO may be latched for the next SYNC
+  bool any_deadline_armed_ = false;  ///< some RPDO may have its reception deadline armed
 };
 
 }  // namespace canopen

@@ -26,6 +26,8 @@ class SdoServer {
   /// Drops any transfer in progress without a frame (NMT reset, power-off).
   void reset();
   bool busy() const { return state_ != State::Idle; }
+  /// process() has nothing to do: no transfer to time out, no response held back.
+  bool idle() const { return state_ == State::Idle && !deferred_; }
 
  private:
   enum class State : std::uint8_t { Idle, Download, Upload };

@@ -420,3 +420,139 @@ TEST(PdoPolicyKnobs, EventTimerWriteRestartsThePeriod) {
     }
   }
 }
+
+// Parameters and mappings rewritten by SDO while the node runs in Operational with SYNCs
+// flowing: each change takes effect at once, TPDOs move between the SYNC-driven and the
+// event-driven kinds, and a remapped RPDO writes its new objects.
+TEST_F(PdoTest, TpdoRemappedWhileOperationalSendsTheNewMappingFromTheNextSync) {
+  operational();
+  h.take();
+  h.node().od().set<std::int32_t>(0x6001, 0, -2);
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0xFE, 0xFF, 0xFF, 0xFF})});
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);  // invalid: no longer sent
+  h.send(0x080, {});
+  EXPECT_TRUE(h.take().empty());
+  ASSERT_EQ(h.write(0x1A01, 0, 0, 1), 0u);
+  ASSERT_EQ(h.write(0x1A01, 1, 0x60020008, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 2, 0x60000010, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 3, 0x60010020, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 0, 3, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x00000285, 4), 0u);
+  EXPECT_EQ(h.node().pdo().tpdo_length(2), 7);
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x55, 0x34, 0x12, 0xFE, 0xFF, 0xFF, 0xFF})});
+  // Mapping count 0 while valid is refused; invalid with count 0: nothing is sent.
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 0, 0, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x00000285, 4), 0u);
+  h.send(0x080, {});
+  h.run_ms(5);
+  EXPECT_TRUE(h.take().empty());
+}
+
+TEST_F(PdoTest, TransmissionTypeChangedWhileOperationalMovesTheTpdoBetweenSyncAndEvents) {
+  operational();
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x34, 0x12, 0x55})});
+  // TPDO1 from event-driven (255) to every SYNC (1): changes alone no longer send it.
+  ASSERT_EQ(h.write(0x1800, 2, 1, 1), 0u);
+  h.node().od().set<std::uint16_t>(0x6000, 0, 0x0A0B);
+  h.run_ms(3);
+  EXPECT_TRUE(h.take().empty());
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), (Frames{Frame(0x185, {0x0B, 0x0A, 0x55}), Frame(0x285, {0, 0, 0, 0})}));
+  // TPDO2 from SYNC (1) to event-driven (255) with an event timer: SYNCs no longer send it.
+  ASSERT_EQ(h.write(0x1801, 2, 255, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 5, 10, 2), 0u);
+  h.take();
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x0B, 0x0A, 0x55})});
+  h.node().od().set<std::int32_t>(0x6001, 0, 3);
+  h.run_ticks(1);
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x03, 0, 0, 0})});
+  h.run_ms(10);
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x03, 0, 0, 0})});  // the event timer
+  // Type 0 (acyclic synchronous): sent at a SYNC, and only when the data changed.
+  ASSERT_EQ(h.write(0x1801, 2, 0, 1), 0u);
+  h.take();
+  h.node().od().set<std::int32_t>(0x6001, 0, 4);
+  h.run_ms(20);
+  EXPECT_TRUE(h.take().empty());
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), (Frames{Frame(0x185, {0x0B, 0x0A, 0x55}), Frame(0x285, {0x04, 0, 0, 0})}));
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x0B, 0x0A, 0x55})});
+}
+
+TEST_F(PdoTest, TpdoCobIdChangedWhileOperationalGoesOutOnTheNewIdentifier) {
+  operational();
+  h.take();
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x00000391, 4), 0u);
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x391, {0, 0, 0, 0})});
+  h.send(Frame::remote(0x391, 4));
+  EXPECT_EQ(h.take(), Frames{Frame(0x391, {0, 0, 0, 0})});
+  h.send(Frame::remote(0x285, 4));  // the old identifier is no longer routed
+  EXPECT_TRUE(h.take().empty());
+}
+
+TEST_F(PdoTest, RpdoRemappedWhileOperationalWritesItsNewObjects) {
+  operational();
+  h.take();
+  h.send(0x205, {0x01, 0x00, 0x00, 0x00, 0x02, 0x00});
+  EXPECT_EQ(h.node().od().get<std::int32_t>(0x6001), 1);
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 2u);
+  ASSERT_EQ(h.write(0x1400, 1, 0x80000205, 4), 0u);
+  h.send(0x205, {0x07, 0x00, 0x00, 0x00, 0x08, 0x00});  // invalid: ignored
+  EXPECT_EQ(h.node().od().get<std::int32_t>(0x6001), 1);
+  ASSERT_EQ(h.write(0x1600, 0, 0, 1), 0u);
+  ASSERT_EQ(h.write(0x1600, 1, 0x60000010, 4), 0u);
+  ASSERT_EQ(h.write(0x1600, 2, 0x00050008, 4), 0u);  // dummy UNSIGNED8: a byte skipped
+  ASSERT_EQ(h.write(0x1600, 3, 0x60010020, 4), 0u);
+  ASSERT_EQ(h.write(0x1600, 0, 3, 1), 0u);
+  ASSERT_EQ(h.write(0x1400, 1, 0x00000205, 4), 0u);
+  EXPECT_EQ(h.node().pdo().rpdo_length(1), 7);
+  h.send(0x205, {0x34, 0x12, 0xEE, 0xFC, 0xFF, 0xFF, 0xFF});
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 0x1234u);
+  EXPECT_EQ(h.node().od().get<std::int32_t>(0x6001), -4);
+  // Now synchronous: the values wait for the SYNC.
+  ASSERT_EQ(h.write(0x1400, 2, 1, 1), 0u);
+  h.send(0x205, {0x78, 0x56, 0x00, 0x05, 0x00, 0x00, 0x00});
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 0x1234u);
+  h.send(0x080, {});
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 0x5678u);
+  EXPECT_EQ(h.node().od().get<std::int32_t>(0x6001), 5);
+}
+
+TEST(PdoWidthConversion, NarrowObjectsInWideSlotsAreSignOrZeroExtendedAndWideOnesTruncated) {
+  canopen::NodePolicy policy;
+  policy.pdo.width_conversion = true;
+  vtest::CanopenHarness h(vtest::make_generic_od(), policy, 5);
+  h.power_on();
+  h.take();
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 0, 0, 1), 0u);
+  ASSERT_EQ(h.write(0x1A01, 1, 0x60010030, 4), 0u);  // I32 in 48 bits: sign-extended
+  ASSERT_EQ(h.write(0x1A01, 2, 0x60020010, 4), 0u);  // U8 in 16 bits: zero-extended
+  ASSERT_EQ(h.write(0x1A01, 0, 2, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x00000285, 4), 0u);
+  h.nmt(0x01, 5);
+  h.run_ticks(1);
+  h.take();
+  h.node().od().set<std::int32_t>(0x6001, 0, -3);
+  h.node().od().set<std::uint8_t>(0x6002, 0, 0x81);
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0xFD, 0xFF, 0xFF, 0xFF, 0xFF, 0xFF, 0x81, 0x00})});
+  h.node().od().set<std::int32_t>(0x6001, 0, 0x7FFFFFFF);
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0xFF, 0xFF, 0xFF, 0x7F, 0x00, 0x00, 0x81, 0x00})});
+  // A wide object in a narrow slot keeps its low bytes.
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 0, 0, 1), 0u);
+  ASSERT_EQ(h.write(0x1A01, 1, 0x60010010, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 0, 1, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x00000285, 4), 0u);
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0xFF, 0xFF})});
+}
