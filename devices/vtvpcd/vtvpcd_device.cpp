@@ -2,9 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 #include "devices/canopen/emergency.h"
 #include "devices/canopen/error_control.h"
@@ -254,15 +251,7 @@ void VtvpcdDevice::on_communication_recovered(canopen::CommError error) {
 
 std::uint16_t VtvpcdDevice::discrete_inputs() const {
   unsigned w = 0;
-#if defined(__SSE2__)
-  // Every control cycle: two inputs per compare (>= 0.5, false for NaN as high() is).
-  static_assert(std::tuple_size_v<decltype(di_)> == 6);
-  const __m128d half = _mm_set1_pd(0.5);
-  for (std::size_t i = 0; i < di_.size(); i += 2)
-    w |= static_cast<unsigned>(_mm_movemask_pd(_mm_cmpge_pd(_mm_loadu_pd(&di_[i]), half))) << i;
-#else
   for (std::size_t i = 0; i < di_.size(); ++i) w |= static_cast<unsigned>(high(di_[i])) << i;
-#endif
   w |= static_cast<unsigned>(high(enable_)) * di::kEnable;
   return static_cast<std::uint16_t>(w);
 }
