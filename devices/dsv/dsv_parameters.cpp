@@ -168,7 +168,7 @@ void DsvParameters::install_shared() {
     shared_[static_cast<std::size_t>(spec.shared)].push_back(od_.entry(spec.index, spec.shape == Shape::Record ? 1 : 0));
   }
   for (std::size_t group = 0; group < shared_.size(); ++group)
-    shared_first_[group] = dsp408::IntegerParameter(shared_[group].empty() ? nullptr : shared_[group].front());
+    shared_first_[group] = devices::IntegerEntry(shared_[group].empty() ? nullptr : shared_[group].front());
   for (std::size_t group = 1; group < shared_.size(); ++group) {
     for (OdEntry* e : shared_[group]) {
       od_.add_observer(e->index, e->sub, [this, group](OdEntry& written, Origin) {

@@ -54,10 +54,10 @@ class DsvSignalChain {
   };
   /// Parameters read every cycle (DsvParameters::bind_value, bound once; unbound when absent).
   struct Parameters {
-    dsp408::IntegerParameter vpoc_a, vpoc_b, vprc_a, vprc_b, dcol, inversion, error_handling, system_inverted, falling_a,
+    devices::IntegerEntry vpoc_a, vpoc_b, vprc_a, vprc_b, dcol, inversion, error_handling, system_inverted, falling_a,
         falling_b, imin_always, solenoid_off_disabled, speed_pos, speed_neg;
   };
-  static std::int64_t value(const dsp408::IntegerParameter& e) { return e.get(); }
+  static std::int64_t value(const devices::IntegerEntry& e) { return e.as<std::int64_t>(); }
   static std::int64_t value(const canopen::OdEntry* e) { return e ? e->as<std::int64_t>() : 0; }
   LoopObjects loop_objects(std::int8_t m, canopen::ObjectDictionary& od);
   template <typename E>

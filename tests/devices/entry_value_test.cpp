@@ -69,20 +69,24 @@ TEST(EntryValue, StoresAsEncodeUnsignedDoes) {
       e.value = Bytes(n, 0xA5);
       Bytes expected(n, 0xA5);
       canopen::encode_unsigned(p, expected);
-      IntegerEntry(&e).store(p);
-      EXPECT_EQ(e.value, expected) << "type 0x" << std::hex << static_cast<int>(type) << " value " << p;
-      e.value = Bytes(n, 0x5A);
       store_entry_bits(e, p);
-      EXPECT_EQ(e.value, expected);
+      EXPECT_EQ(e.value, expected) << "type 0x" << std::hex << static_cast<int>(type) << " value " << p;
     }
   }
   // Signed values are written in two's complement, truncated to the entry.
   canopen::OdEntry e;
   e.type = DataType::Integer16;
   e.value = Bytes(2, 0);
-  IntegerEntry(&e).store(std::int32_t{-2});
+  store_entry_bits(e, static_cast<std::uint64_t>(std::int64_t{-2}));
   EXPECT_EQ(e.value, (Bytes{0xFE, 0xFF}));
   EXPECT_EQ(IntegerEntry(&e).as<std::int32_t>(), -2);
+}
+
+TEST(EntryValue, AnUnboundEntryReadsZero) {
+  const IntegerEntry unbound;
+  EXPECT_FALSE(unbound);
+  EXPECT_EQ(unbound.as<std::int64_t>(), 0);
+  EXPECT_EQ(IntegerEntry(nullptr).as<std::uint16_t>(), 0u);
 }
 
 TEST(EntryValue, AReplacedValueVectorIsReadAfresh) {

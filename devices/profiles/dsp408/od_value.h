@@ -1,14 +1,13 @@
 // Publishing process values into object-dictionary entries once per control cycle without
 // allocating (ObjectDictionary::set and OdEntry::assign build a temporary byte vector), and
-// reading integer parameters every cycle without the generic decoder.
+// reading integer parameters every cycle without the generic decoder (devices::IntegerEntry).
 #pragma once
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 
 #include "devices/canopen/object_dictionary.h"
+#include "devices/entry_value.h"
 
 namespace dsp408 {
 
@@ -19,51 +18,6 @@ inline void put_rounded(canopen::OdEntry& e, double v, double lo, double hi) {
   const double c = v < lo ? lo : (v > hi ? hi : v);
   put(e, c == 0.0 ? 0 : static_cast<std::int64_t>(std::llround(c)));  // idle outputs publish 0 every cycle
 }
-
-/// An integer parameter entry resolved once, its signedness taken once: the per-cycle read is a
-/// size test and one load. The value vector is read at every access (a write or a reset may
-/// replace it); an entry of another size or a REAL takes OdEntry::as<std::int64_t>(), whose value
-/// get() always equals.
-class IntegerParameter {
- public:
-  IntegerParameter() = default;
-  explicit IntegerParameter(const canopen::OdEntry* e)
-      : e_(e),
-        signed_(e && canopen::is_signed_integer(e->type)),
-        direct_(e && !canopen::is_real(e->type) && std::endian::native == std::endian::little) {}
-
-  explicit operator bool() const { return e_ != nullptr; }
-  const canopen::OdEntry* entry() const { return e_; }
-
-  /// The value as OdEntry::as<std::int64_t>() gives it; 0 when unbound.
-  std::int64_t get() const {
-    if (direct_) [[likely]] {
-      if constexpr (std::endian::native == std::endian::little) {
-        const canopen::Bytes& v = e_->value;
-        switch (v.size()) {
-          case 1: return signed_ ? std::int64_t{static_cast<std::int8_t>(v[0])} : std::int64_t{v[0]};
-          case 2: {
-            std::uint16_t u;
-            std::memcpy(&u, v.data(), 2);
-            return signed_ ? std::int64_t{static_cast<std::int16_t>(u)} : std::int64_t{u};
-          }
-          case 4: {
-            std::uint32_t u;
-            std::memcpy(&u, v.data(), 4);
-            return signed_ ? std::int64_t{static_cast<std::int32_t>(u)} : std::int64_t{u};
-          }
-          default: break;
-        }
-      }
-    }
-    return e_ ? e_->as<std::int64_t>() : 0;
-  }
-
- private:
-  const canopen::OdEntry* e_ = nullptr;
-  bool signed_ = false;
-  bool direct_ = false;  // bound, an integer type, little-endian host: the loads above apply
-};
 
 /// put_rounded() for an output published every cycle whose value moves slowly (a temperature):
 /// the rounding is skipped while the value stays strictly inside the half-open step of the
