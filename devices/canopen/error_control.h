@@ -2,9 +2,7 @@
 // node guarding with toggle bit plus life guarding (0x100C × 0x100D), all on COB-ID 0x700+N.
 #pragma once
 
-#include <bit>
 #include <cstdint>
-#include <cstring>
 
 #include "devices/canopen/object_dictionary.h"
 
@@ -28,18 +26,8 @@ class ErrorControl {
   /// After boot-up: toggle 0, guarding disarmed, first heartbeat one period from `now`.
   void reset_communication(sim::Time now);
 
-  /// 0x1017 (0 = no heartbeat). Read every tick: a plain load when it has its standard type.
-  std::uint16_t heartbeat_period_ms() const {
-    if (!heartbeat_time_) return 0;
-    if constexpr (std::endian::native == std::endian::little) {
-      if (heartbeat_time_->type == DataType::Unsigned16 && heartbeat_time_->value.size() == 2) {
-        std::uint16_t v;
-        std::memcpy(&v, heartbeat_time_->value.data(), 2);
-        return v;
-      }
-    }
-    return heartbeat_time_->as<std::uint16_t>();
-  }
+  /// 0x1017 (0 = no heartbeat), read every tick.
+  std::uint16_t heartbeat_period_ms() const { return u16_value(heartbeat_time_); }
   bool life_guarding_armed() const { return armed_; }
   bool life_guarding_error() const { return in_error_; }
 

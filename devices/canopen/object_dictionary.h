@@ -347,6 +347,21 @@ T OdEntry::as() const {
   return value_as<T>(type, value);
 }
 
+/// An UNSIGNED16 communication parameter read on every tick or transmission (heartbeat period,
+/// inhibit time, event timer): a plain load when the entry has its standard type, else as<>();
+/// 0 for no entry.
+[[gnu::always_inline]] inline std::uint16_t u16_value(const OdEntry* e) {
+  if (!e) return 0;
+  if constexpr (std::endian::native == std::endian::little) {
+    if (e->type == DataType::Unsigned16 && e->value.size() == 2) {
+      std::uint16_t v;
+      std::memcpy(&v, e->value.data(), 2);
+      return v;
+    }
+  }
+  return e->as<std::uint16_t>();
+}
+
 template <typename T>
 Bytes ObjectDictionary::encode(DataType type, T v) {
   Bytes out(encoded_size<T>(type), 0);

@@ -1,8 +1,6 @@
 #include "devices/canopen/pdo_service.h"
 
 #include <algorithm>
-#include <bit>
-#include <cstring>
 
 #include "devices/canopen/emergency.h"
 #include "devices/canopen/node.h"
@@ -17,19 +15,6 @@ constexpr std::uint16_t kEmcyRpdoShort = 0x8210, kEmcyRpdoLong = 0x8220, kEmcyRp
 
 bool external(Origin o) { return o == Origin::Sdo; }
 
-/// An UNSIGNED16 communication parameter (inhibit time, event timer), read on every transmission
-/// and tick: a plain load when the entry has its standard type, else the general conversion.
-[[gnu::always_inline]] inline std::uint16_t u16_value(const OdEntry* e) {
-  if (!e) return 0;
-  if constexpr (std::endian::native == std::endian::little) {
-    if (e->type == DataType::Unsigned16 && e->value.size() == 2) {
-      std::uint16_t v;
-      std::memcpy(&v, e->value.data(), 2);
-      return v;
-    }
-  }
-  return e->as<std::uint16_t>();
-}
 }  // namespace
 
 PdoService::PdoService(Node& node) : node_(node) {}
