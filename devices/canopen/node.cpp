@@ -217,11 +217,7 @@ void Node::rebuild_dispatch() {
 void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
   // Every frame on the bus comes here, most of them for other nodes (Route::None): that path and
   // the SYNC's make no call but the one they need; the other routes go through dispatch().
-  if (rx_plain_) {  // the usual state: what is left of the checks below
-    now_ = now;
-    if (silent() || !on_bus_rate()) return;
-    ++stats_.rx_frames;
-    const RouteEntry route = frame.extended ? extended_route(frame.id) : routes_[frame.id & 0x7FF];
+  const auto route_frame = [&](const RouteEntry& route) {
     if (route.route == Route::None) {
       ++stats_.ignored_frames;
       return;
@@ -231,6 +227,12 @@ void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
       return;
     }
     dispatch(route, frame, now);
+  };
+  if (rx_plain_) {  // the usual state: what is left of the checks below
+    now_ = now;
+    if (silent() || !on_bus_rate()) return;
+    ++stats_.rx_frames;
+    route_frame(frame.extended ? extended_route(frame.id) : routes_[frame.id & 0x7FF]);
     return;
   }
   if (!powered_) return;
@@ -245,16 +247,8 @@ void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
   if (route.route != Route::Lss) {
     if (node_id_ < 1 || node_id_ > 127) return;  // unconfigured: LSS only
     if (boot_pending_) return;                    // still initialising
-    if (route.route == Route::None) {
-      ++stats_.ignored_frames;
-      return;
-    }
-    if (route.route == Route::Sync) {
-      sync_->on_frame(frame, now);
-      return;
-    }
   }
-  dispatch(route, frame, now);
+  route_frame(route);
 }
 
 void Node::detect_bit_rate(sim::Time now) {
