@@ -1,6 +1,7 @@
 // vplant::Simulation: the scenario engine's pieces (world, fault injector, scripted master,
 // nodes, plant) on one virtual-time scheduler, with the caller's endpoints and step functions
-// added. The same assembly as engine/runner.cpp, minus outputs, real time and the CLI's summary.
+// added. The tick is assembled as for engine/runner.cpp (engine/tick_assembly.h), minus outputs,
+// real time and the CLI's summary.
 #include <vplant/simulation.h>
 
 #include <yaml-cpp/yaml.h>
@@ -17,6 +18,7 @@
 #include "engine/scenario_loader.h"
 #include "engine/script_loader.h"
 #include "engine/scripted_master.h"
+#include "engine/tick_assembly.h"
 #include "engine/world.h"
 #include "sim/scheduler.h"
 #include "sim/trace_writer.h"
@@ -147,14 +149,7 @@ void Simulation::Impl::build() {
   nodes = std::make_unique<scenario::NodeGroup>(*world);
 
   scheduler = std::make_unique<sim::Scheduler>(s.clock.tick, sim::ClockMode::Virtual);
-  for (auto& bus : world->buses()) scheduler->add_bus(bus.get());
-  scheduler->add(faults.get());
-  scheduler->add(master.get());
-  scheduler->add(&caller_steps);
-  scheduler->add(&world->plant_to_devices());
-  scheduler->add(nodes.get());
-  scheduler->add(&world->devices_to_plant());
-  if (world->plant()) scheduler->add(world->plant());
+  scenario::assemble_tick(*scheduler, scenario::TickParts{*world, *faults, *master, *nodes, &caller_steps, nullptr});
 
   for (auto& bus : world->buses()) {
     last_frames.push_back(std::make_unique<LastFrames>());

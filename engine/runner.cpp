@@ -15,6 +15,7 @@
 #include "engine/scenario_loader.h"
 #include "engine/scripted_master.h"
 #include "engine/speed_text.h"
+#include "engine/tick_assembly.h"
 #include "engine/world.h"
 
 namespace scenario {
@@ -96,14 +97,7 @@ Runner::Runner(const Scenario& scenario, const Environment& env, const RunOption
   }
 
   m.scheduler = std::make_unique<sim::Scheduler>(scenario.clock.tick, realtime ? sim::ClockMode::RealTime : sim::ClockMode::Virtual);
-  for (auto& bus : m.world->buses()) m.scheduler->add_bus(bus.get());
-  m.scheduler->add(m.faults.get());
-  m.scheduler->add(m.master.get());
-  m.scheduler->add(&m.world->plant_to_devices());
-  m.scheduler->add(m.nodes.get());
-  m.scheduler->add(&m.world->devices_to_plant());
-  m.scheduler->add(m.recorder.get());
-  if (m.world->plant()) m.scheduler->add(m.world->plant());
+  assemble_tick(*m.scheduler, TickParts{*m.world, *m.faults, *m.master, *m.nodes, nullptr, m.recorder.get()});
 
   if (!m.trace_path.empty()) {
     std::string error = prepare_output(m.trace_path);
