@@ -265,7 +265,11 @@ struct ControlPlane::Server {
   template <typename R>
   R call(std::function<R(const scenario::RunContext&)> f) {
     need_run();
-    auto r = cp.bridge_.call<R>(std::move(f), kCommandTimeout);
+    SimBridge::Posted posted{};
+    auto r = cp.bridge_.call<R>(std::move(f), kCommandTimeout, &posted);
+    if (posted == SimBridge::Posted::Full)
+      throw HttpError{429, "too many commands wait for the simulation (at most " + std::to_string(kMaxQueuedCommands) +
+                               "): retry later"};
     if (!r) throw HttpError{503, "the simulation did not answer (the run has ended?)"};
     return std::move(*r);
   }
@@ -578,11 +582,11 @@ struct ControlPlane::Server {
                           : sim::CanFrame::data_frame(id, data);
     f.extended = ext;
     const auto bus = b->second;
-    call<bool>([this, bus, f](const scenario::RunContext&) {
-      cp.bridge_.send_frame(bus, f);
-      return true;
-    });
-    reply(res, 200, {{"ok", true}});
+    const bool queued = call<bool>([this, bus, f](const scenario::RunContext&) { return cp.bridge_.send_frame(bus, f); });
+    if (!queued)
+      throw HttpError{503, "the bus refused the frame: the control plane's transmit queue on '" + bus_name +
+                               "' is full (the bus carries frames at its bit rate): retry later"};
+    reply(res, 200, {{"ok", true}, {"queued", true}});
   }
 
   scenario::FaultSpec fault_spec(const json& body) {
@@ -759,7 +763,8 @@ struct ControlPlane::Server {
     std::optional<double> speed;
     if (body.contains("speed")) {
       speed = number_field(body, "speed");
-      if (*speed < 0 || *speed > 1000) throw HttpError{400, "field 'speed' out of range 0..1000 (0 = as fast as possible)"};
+      if (*speed != 0 && (*speed < kMinSpeed || *speed > kMaxSpeed))
+        throw HttpError{400, "field 'speed' must be 0 (as fast as possible) or 0.001..1000 (× wall clock)"};
     }
     bool ok = false;
     if (action == "pause") {
