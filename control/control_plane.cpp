@@ -1,7 +1,6 @@
 #include "control/control_plane.h"
 
 #include <arpa/inet.h>
-#include <httplib.h>
 
 #include <cmath>
 #include <map>
@@ -11,6 +10,7 @@
 
 #include "control/dictionary_catalog.h"
 #include "control/event_hub.h"
+#include "control/http_server.h"
 #include "control/json_views.h"
 #include "control/server_thread_priority.h"
 #include "devices/canopen/nmt_state.h"
@@ -31,24 +31,9 @@ using nlohmann::json;
 namespace {
 
 constexpr std::size_t kMaxBody = 64 * 1024;
+constexpr unsigned kMaxConnectionsPerAddress = 64;
 constexpr auto kCommandTimeout = std::chrono::milliseconds(2000);
 constexpr auto kSdoWait = std::chrono::milliseconds(5000);
-
-/// httplib's worker pool, its threads at lowered priority (control/server_thread_priority.h).
-class LowPriorityPool final : public httplib::TaskQueue {
- public:
-  explicit LowPriorityPool(std::size_t threads) : pool_(threads) {}
-  void enqueue(std::function<void()> fn) override {
-    pool_.enqueue([fn = std::move(fn)] {
-      lower_this_thread_priority();
-      fn();
-    });
-  }
-  void shutdown() override { pool_.shutdown(); }
-
- private:
-  httplib::ThreadPool pool_;
-};
 
 /// A client error: answered as {"error": reason} with its status, nothing changed.
 struct HttpError {
@@ -56,12 +41,15 @@ struct HttpError {
   std::string reason;
 };
 
-void reply(httplib::Response& res, int status, const json& body) {
+/// A JSON answer; text that is not valid UTF-8 (a node name, a header echoed) is replaced, so the
+/// reply is always valid JSON.
+void reply(http::Response& res, int status, const json& body) {
   res.status = status;
-  res.set_content(body.dump(), "application/json");
+  res.type = "application/json";
+  res.body = body.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
-json parse_body(const httplib::Request& req) {
+json parse_body(const http::Request& req) {
   json j = json::parse(req.body, nullptr, false);
   if (j.is_discarded()) throw HttpError{400, "malformed JSON body"};
   if (!j.is_object()) throw HttpError{400, "the body must be a JSON object"};
@@ -197,10 +185,22 @@ bool is_loopback(const std::string& address) {
   return (ntohl(a.s_addr) >> 24) == 127;
 }
 
+/// An event-hub client as the server's streaming body.
+class EventStream final : public http::Stream {
+ public:
+  EventStream(EventHub& hub, std::shared_ptr<EventHub::Client> client) : hub_(hub), client_(std::move(client)) {}
+  bool poll(std::string& out) override { return client_->next(out, std::chrono::milliseconds(0)); }
+  void close() override { hub_.close(client_); }
+
+ private:
+  EventHub& hub_;
+  std::shared_ptr<EventHub::Client> client_;
+};
+
 struct ControlPlane::Server {
   ControlPlane& cp;
-  httplib::Server http;
-  std::thread listener;
+  http::Router router;
+  std::unique_ptr<http::Server> http;
   DictionaryCatalog catalog;
   std::unique_ptr<EventHub> hub;
   json scenario_json;
@@ -225,20 +225,31 @@ struct ControlPlane::Server {
     return cp.options_.address == "0.0.0.0" && ::inet_pton(AF_INET, name.c_str(), &a) == 1;
   }
 
-  httplib::Server::HandlerResponse check_request(const httplib::Request& req, httplib::Response& res) const {
-    const auto host = req.get_header_value("Host");
+  /// Runs once the headers are in, before the body is read (http::Admission).
+  http::Response check_request(const http::Request& req) const {
+    http::Response res;
+    res.status = 0;
+    const auto host = req.header_value("Host");
     if (!host_allowed(host)) {
       reply(res, 403, {{"error", "Host '" + host + "' is not the address this server serves"}});
-      return httplib::Server::HandlerResponse::Handled;
+    } else if (req.has_header("Origin") && req.header_value("Origin") != "http://" + host) {
+      reply(res, 403, {{"error", "Origin '" + req.header_value("Origin") + "' is not this server"}});
+    } else if (const auto site = req.header_value("Sec-Fetch-Site");
+               req.path.rfind("/api/", 0) == 0 && (site == "cross-site" || site == "same-site")) {
+      // A browser says where a request comes from even when it sends no Origin (<img>, <form>).
+      reply(res, 403, {{"error", "a request from another site (Sec-Fetch-Site: " + site + ") may not use the API"}});
     }
-    if (req.has_header("Origin")) {
-      const auto origin = req.get_header_value("Origin");
-      if (origin != "http://" + host) {
-        reply(res, 403, {{"error", "Origin '" + origin + "' is not this server"}});
-        return httplib::Server::HandlerResponse::Handled;
-      }
+    return res;
+  }
+
+  /// Every request that passed check_request (a worker thread).
+  void dispatch(http::Request& req, http::Response& res) {
+    if (router.dispatch(req, res)) return;
+    if (req.path.rfind("/api/", 0) == 0 || req.method != "GET") {
+      reply(res, 404, {{"error", "no such endpoint: " + req.path}});
+      return;
     }
-    return httplib::Server::HandlerResponse::Unhandled;
+    serve_static(req, res);
   }
 
   // ---- lookups --------------------------------------------------------------------------------
@@ -254,7 +265,11 @@ struct ControlPlane::Server {
   template <typename R>
   R call(std::function<R(const scenario::RunContext&)> f) {
     need_run();
-    auto r = cp.bridge_.call<R>(std::move(f), kCommandTimeout);
+    SimBridge::Posted posted{};
+    auto r = cp.bridge_.call<R>(std::move(f), kCommandTimeout, &posted);
+    if (posted == SimBridge::Posted::Full)
+      throw HttpError{429, "too many commands wait for the simulation (at most " + std::to_string(kMaxQueuedCommands) +
+                               "): retry later"};
     if (!r) throw HttpError{503, "the simulation did not answer (the run has ended?)"};
     return std::move(*r);
   }
@@ -265,9 +280,9 @@ struct ControlPlane::Server {
   }
 
   // ---- routes ---------------------------------------------------------------------------------
-  using Handler = std::function<void(const httplib::Request&, httplib::Response&)>;
+  using Handler = std::function<void(const http::Request&, http::Response&)>;
   Handler guarded(Handler h) {
-    return [h = std::move(h)](const httplib::Request& req, httplib::Response& res) {
+    return [h = std::move(h)](const http::Request& req, http::Response& res) {
       try {
         h(req, res);
       } catch (const HttpError& e) {
@@ -344,14 +359,11 @@ struct ControlPlane::Server {
   }
 
   void routes() {
-    http.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) { return check_request(req, res); });
-    http.set_payload_max_length(kMaxBody);
-
-    http.Get("/api/scenario", guarded([this](const httplib::Request&, httplib::Response& res) {
+    router.add("GET", "/api/scenario", guarded([this](const http::Request&, http::Response& res) {
       need_run();
       reply(res, 200, scenario_json);
     }));
-    http.Get("/api/nodes", guarded([this](const httplib::Request&, httplib::Response& res) {
+    router.add("GET", "/api/nodes", guarded([this](const http::Request&, http::Response& res) {
       need_run();
       std::vector<NodeStatus> nodes;
       cp.bridge_.nodes(nodes);
@@ -360,61 +372,36 @@ struct ControlPlane::Server {
         a.push_back(node_json(node_names[i], bus_names[static_cast<std::size_t>(node_bus[i])], nodes[i]));
       reply(res, 200, a);
     }));
-    http.Get(R"(/api/nodes/([^/]+))", guarded([this](const httplib::Request& req, httplib::Response& res) {
+    router.add("GET", R"(/api/nodes/([^/]+))", guarded([this](const http::Request& req, http::Response& res) {
       const auto i = node(req.matches[1]);
       need_run();
       reply(res, 200, node_json_now(i));
     }));
-    http.Get(R"(/api/nodes/([^/]+)/od)", guarded([this](const httplib::Request& req, httplib::Response& res) { od(req, res); }));
-    http.Post(R"(/api/nodes/([^/]+)/sdo)", guarded([this](const httplib::Request& req, httplib::Response& res) { sdo_write(req, res); }));
-    http.Get(R"(/api/nodes/([^/]+)/sdo)", guarded([this](const httplib::Request& req, httplib::Response& res) { sdo_read(req, res); }));
-    http.Post(R"(/api/nodes/([^/]+)/inputs)", guarded([this](const httplib::Request& req, httplib::Response& res) { set_input(req, res); }));
-    http.Post("/api/nmt", guarded([this](const httplib::Request& req, httplib::Response& res) { nmt(req, res); }));
-    http.Post("/api/frames", guarded([this](const httplib::Request& req, httplib::Response& res) { send_frame(req, res); }));
-    http.Post("/api/faults", guarded([this](const httplib::Request& req, httplib::Response& res) { inject(req, res); }));
-    http.Get("/api/faults", guarded([this](const httplib::Request& req, httplib::Response& res) { list_faults(req, res); }));
-    http.Delete(R"(/api/faults/([^/]+))", guarded([this](const httplib::Request& req, httplib::Response& res) { clear_fault(req, res); }));
-    http.Get("/api/signals", guarded([this](const httplib::Request& req, httplib::Response& res) { signals(req, res); }));
-    http.Get("/api/clock", guarded([this](const httplib::Request&, httplib::Response& res) {
+    router.add("GET", R"(/api/nodes/([^/]+)/od)", guarded([this](const http::Request& req, http::Response& res) { od(req, res); }));
+    router.add("POST", R"(/api/nodes/([^/]+)/sdo)", guarded([this](const http::Request& req, http::Response& res) { sdo_write(req, res); }));
+    router.add("POST", R"(/api/nodes/([^/]+)/sdo/read)", guarded([this](const http::Request& req, http::Response& res) { sdo_read(req, res); }));
+    router.add("POST", R"(/api/nodes/([^/]+)/inputs)", guarded([this](const http::Request& req, http::Response& res) { set_input(req, res); }));
+    router.add("POST", "/api/nmt", guarded([this](const http::Request& req, http::Response& res) { nmt(req, res); }));
+    router.add("POST", "/api/frames", guarded([this](const http::Request& req, http::Response& res) { send_frame(req, res); }));
+    router.add("POST", "/api/faults", guarded([this](const http::Request& req, http::Response& res) { inject(req, res); }));
+    router.add("GET", "/api/faults", guarded([this](const http::Request& req, http::Response& res) { list_faults(req, res); }));
+    router.add("DELETE", R"(/api/faults/([^/]+))", guarded([this](const http::Request& req, http::Response& res) { clear_fault(req, res); }));
+    router.add("GET", "/api/signals", guarded([this](const http::Request& req, http::Response& res) { signals(req, res); }));
+    router.add("GET", "/api/clock", guarded([this](const http::Request&, http::Response& res) {
       need_run();
       reply(res, 200, clock_json());
     }));
-    http.Post("/api/clock", guarded([this](const httplib::Request& req, httplib::Response& res) { clock_control(req, res); }));
-    http.Get("/api/events", [this](const httplib::Request& req, httplib::Response& res) { events(req, res); });
+    router.add("POST", "/api/clock", guarded([this](const http::Request& req, http::Response& res) { clock_control(req, res); }));
+    router.add("GET", "/api/events", [this](const http::Request& req, http::Response& res) { events(req, res); });
 
-    // Anything else under /api: 405 when the path exists with another method, else 404.
-    const auto fallback = guarded([](const httplib::Request& req, httplib::Response&) {
-      static const std::vector<std::pair<std::regex, const char*>> known = {
-          {std::regex("/api/scenario"), "GET"},
-          {std::regex("/api/nodes"), "GET"},
-          {std::regex("/api/nodes/[^/]+"), "GET"},
-          {std::regex("/api/nodes/[^/]+/od"), "GET"},
-          {std::regex("/api/nodes/[^/]+/sdo"), "GET, POST"},
-          {std::regex("/api/nodes/[^/]+/inputs"), "POST"},
-          {std::regex("/api/nmt"), "POST"},
-          {std::regex("/api/frames"), "POST"},
-          {std::regex("/api/faults"), "GET, POST"},
-          {std::regex("/api/faults/[^/]+"), "DELETE"},
-          {std::regex("/api/signals"), "GET"},
-          {std::regex("/api/clock"), "GET, POST"},
-          {std::regex("/api/events"), "GET"}};
-      for (const auto& [re, methods] : known)
-        if (std::regex_match(req.path, re)) throw HttpError{405, req.method + " is not allowed on " + req.path + " (use " + methods + ")"};
-      throw HttpError{404, "no such endpoint: " + req.path};
-    });
-    http.Get("/api/.*", fallback);
-    http.Post("/api/.*", fallback);
-    http.Put("/api/.*", fallback);
-    http.Delete("/api/.*", fallback);
-    http.Patch("/api/.*", fallback);
-    http.Get("/.*", [](const httplib::Request& req, httplib::Response& res) { serve_static(req, res); });
   }
 
-  static void serve_static(const httplib::Request& req, httplib::Response& res) {
+  static void serve_static(const http::Request& req, http::Response& res) {
 #ifdef VPLANT_HAVE_DASHBOARD
     if (const auto* asset = dashboard::find_asset(req.path)) {
       res.status = 200;
-      res.set_content(std::string(asset->body), std::string(asset->content_type));
+      res.type = std::string(asset->content_type);
+      res.body = std::string(asset->body);  // whole: Range is not supported (no amplification)
       return;
     }
     reply(res, 404, {{"error", "no such file: " + req.path}});
@@ -431,7 +418,7 @@ struct ControlPlane::Server {
             {"end_reached", c.end_reached}};
   }
 
-  void od(const httplib::Request& req, httplib::Response& res) {
+  void od(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
     const auto& entries = catalog.entries(i);
     auto values = call<std::vector<std::vector<std::uint8_t>>>([i, &entries](const scenario::RunContext& c) {
@@ -485,7 +472,7 @@ struct ControlPlane::Server {
   }
 
   void sdo_transfer(std::size_t i, bool upload, std::uint16_t index, std::uint8_t sub, std::vector<std::uint8_t> data,
-                    const CatalogEntry* entry, httplib::Response& res) {
+                    const CatalogEntry* entry, http::Response& res) {
     need_run();
     auto future = cp.bridge_.sdo(i, upload, index, sub, std::move(data));
     if (future.wait_for(kSdoWait) != std::future_status::ready) throw HttpError{504, "the SDO transfer did not end in time"};
@@ -498,7 +485,7 @@ struct ControlPlane::Server {
     reply(res, 200, sdo_result(outcome, entry, upload));
   }
 
-  void sdo_write(const httplib::Request& req, httplib::Response& res) {
+  void sdo_write(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
     const auto body = parse_body(req);
     const auto index = static_cast<std::uint16_t>(*integer_field(body, "index", 0, 0xFFFF));
@@ -535,18 +522,15 @@ struct ControlPlane::Server {
     sdo_transfer(i, false, index, sub, std::move(data), entry, res);
   }
 
-  void sdo_read(const httplib::Request& req, httplib::Response& res) {
+  void sdo_read(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
-    json q = json::object();
-    if (!req.has_param("index")) throw HttpError{400, "missing parameter 'index'"};
-    q["index"] = req.get_param_value("index");
-    if (req.has_param("sub")) q["sub"] = req.get_param_value("sub");
-    const auto index = static_cast<std::uint16_t>(*integer_field(q, "index", 0, 0xFFFF));
-    const auto sub = static_cast<std::uint8_t>(*integer_field(q, "sub", 0, 0xFF, 0));
+    const auto body = parse_body(req);
+    const auto index = static_cast<std::uint16_t>(*integer_field(body, "index", 0, 0xFFFF));
+    const auto sub = static_cast<std::uint8_t>(*integer_field(body, "sub", 0, 0xFF, 0));
     sdo_transfer(i, true, index, sub, {}, catalog.find(i, index, sub), res);
   }
 
-  void set_input(const httplib::Request& req, httplib::Response& res) {
+  void set_input(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
     const auto body = parse_body(req);
     const auto name = string_field(body, "name");
@@ -558,7 +542,7 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}});
   }
 
-  void nmt(const httplib::Request& req, httplib::Response& res) {
+  void nmt(const http::Request& req, http::Response& res) {
     const auto body = parse_body(req);
     const auto command = nmt_command(string_field(body, "command"));
     if (!command) throw HttpError{400, "field 'command' must be start, stop, preop, reset_node or reset_comm"};
@@ -583,7 +567,7 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}});
   }
 
-  void send_frame(const httplib::Request& req, httplib::Response& res) {
+  void send_frame(const http::Request& req, http::Response& res) {
     const auto body = parse_body(req);
     const auto bus_name = string_field(body, "bus", bus_names.front());
     const auto b = bus_index.find(bus_name);
@@ -598,11 +582,11 @@ struct ControlPlane::Server {
                           : sim::CanFrame::data_frame(id, data);
     f.extended = ext;
     const auto bus = b->second;
-    call<bool>([this, bus, f](const scenario::RunContext&) {
-      cp.bridge_.send_frame(bus, f);
-      return true;
-    });
-    reply(res, 200, {{"ok", true}});
+    const bool queued = call<bool>([this, bus, f](const scenario::RunContext&) { return cp.bridge_.send_frame(bus, f); });
+    if (!queued)
+      throw HttpError{503, "the bus refused the frame: the control plane's transmit queue on '" + bus_name +
+                               "' is full (the bus carries frames at its bit rate): retry later"};
+    reply(res, 200, {{"ok", true}, {"queued", true}});
   }
 
   scenario::FaultSpec fault_spec(const json& body) {
@@ -673,7 +657,7 @@ struct ControlPlane::Server {
     return spec;
   }
 
-  void inject(const httplib::Request& req, httplib::Response& res) {
+  void inject(const http::Request& req, http::Response& res) {
     const auto spec = fault_spec(parse_body(req));
     struct Result {
       std::string error;
@@ -718,7 +702,7 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}, {"id", r.id}, {"active", r.active}});
   }
 
-  void list_faults(const httplib::Request&, httplib::Response& res) {
+  void list_faults(const http::Request&, http::Response& res) {
     const auto a = call<json>([this](const scenario::RunContext&) {
       json out = json::array();
       for (const auto& f : cp.bridge_.live_faults())
@@ -728,7 +712,7 @@ struct ControlPlane::Server {
     reply(res, 200, a);
   }
 
-  void clear_fault(const httplib::Request& req, httplib::Response& res) {
+  void clear_fault(const http::Request& req, http::Response& res) {
     json q = {{"id", std::string(req.matches[1])}};
     const int id = static_cast<int>(*integer_field(q, "id", 1, INT32_MAX));
     const bool found = call<bool>([this, id](const scenario::RunContext& c) {
@@ -756,8 +740,8 @@ struct ControlPlane::Server {
     return out;
   }
 
-  void signals(const httplib::Request& req, httplib::Response& res) {
-    auto list = signal_list(req.get_param_value("names"));
+  void signals(const http::Request& req, http::Response& res) {
+    auto list = signal_list(req.param("names"));
     if (!req.has_param("names"))
       for (std::size_t s = 0; s < cp.bridge_.signals().size(); ++s) list.push_back(s);
     const auto& sigs = cp.bridge_.signals();
@@ -771,7 +755,7 @@ struct ControlPlane::Server {
     reply(res, 200, {{"t_us", values.first}, {"values", vals}});
   }
 
-  void clock_control(const httplib::Request& req, httplib::Response& res) {
+  void clock_control(const http::Request& req, http::Response& res) {
     const auto body = parse_body(req);
     const auto action = string_field(body, "action");
     need_run();
@@ -779,7 +763,8 @@ struct ControlPlane::Server {
     std::optional<double> speed;
     if (body.contains("speed")) {
       speed = number_field(body, "speed");
-      if (*speed < 0 || *speed > 1000) throw HttpError{400, "field 'speed' out of range 0..1000 (0 = as fast as possible)"};
+      if (*speed != 0 && (*speed < kMinSpeed || *speed > kMaxSpeed))
+        throw HttpError{400, "field 'speed' must be 0 (as fast as possible) or 0.001..1000 (× wall clock)"};
     }
     bool ok = false;
     if (action == "pause") {
@@ -799,29 +784,21 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}});
   }
 
-  void events(const httplib::Request& req, httplib::Response& res) {
+  void events(const http::Request& req, http::Response& res) {
     try {
       need_run();
-      const auto list = signal_list(req.get_param_value("signals"));
+      const auto list = signal_list(req.param("signals"));
       double rate = 10;
       if (req.has_param("rate")) {
-        json q = {{"rate", req.get_param_value("rate")}};
+        json q = {{"rate", req.param("rate")}};
         rate = static_cast<double>(*integer_field(q, "rate", 1, 50));
       }
       auto client = hub->open(list, rate);
       if (!client) throw HttpError{503, "too many event streams (at most " + std::to_string(cp.options_.max_streams) + ")"};
-      res.set_header("Cache-Control", "no-cache");
-      res.set_chunked_content_provider(
-          "text/event-stream",
-          [client](std::size_t, httplib::DataSink& sink) {
-            std::string chunk;
-            const bool open = client->next(chunk, std::chrono::milliseconds(1000));
-            if (chunk.empty()) chunk = ": keep-alive\n\n";
-            if (!sink.is_writable() || !sink.write(chunk.data(), chunk.size())) return false;
-            if (!open) sink.done();
-            return true;
-          },
-          [this, client](bool) { hub->close(client); });
+      res.status = 200;
+      res.type = "text/event-stream";
+      res.headers.emplace_back("Cache-Control", "no-cache");
+      res.stream = std::make_shared<EventStream>(*hub, client);
     } catch (const HttpError& e) {
       reply(res, e.status, {{"error", e.reason}});
     }
@@ -834,22 +811,23 @@ ControlPlane::ControlPlane(UiOptions options) : options_(std::move(options)), br
 
 ControlPlane::~ControlPlane() {
   if (server_->hub) server_->hub->stop();
-  server_->http.stop();
-  if (server_->listener.joinable()) server_->listener.join();
+  if (server_->http) server_->http->stop();
 }
 
 std::string ControlPlane::bind() {
   if (!is_loopback(options_.address) && !options_.allow_remote)
     return "--ui " + options_.address + ": a non-loopback address needs --ui-allow-remote";
-  auto& http = server_->http;
-  http.new_task_queue = [this] { return new LowPriorityPool(options_.max_streams + 4); };
-  if (options_.port == 0) {
-    port_ = http.bind_to_any_port(options_.address);
-    if (port_ <= 0) return "cannot listen on " + options_.address;
-  } else {
-    if (!http.bind_to_port(options_.address, options_.port)) return "cannot listen on " + options_.address + ":" + std::to_string(options_.port) + " (in use?)";
-    port_ = options_.port;
-  }
+  http::Limits limits;
+  limits.max_body = kMaxBody;
+  // On loopback every client has the same address: a per-address cap would lock out the dashboard
+  // together with an abuser.
+  limits.max_connections_per_ip = is_loopback(options_.address) ? 0 : kMaxConnectionsPerAddress;
+  auto& s = *server_;
+  s.http = std::make_unique<http::Server>(
+      limits, [&s](http::Request& req, http::Response& res) { s.dispatch(req, res); },
+      [&s](const http::Request& req) { return s.check_request(req); });
+  if (auto err = s.http->listen(options_.address, options_.port); !err.empty()) return err;
+  port_ = s.http->port();
   if (!is_loopback(options_.address) && options_.out)
     std::fprintf(options_.out,
                  "vplant: WARNING: the control plane listens on %s: anyone who reaches this address can drive the plant "
@@ -871,10 +849,7 @@ void ControlPlane::attach(const scenario::RunContext& context) {
                                      options_.max_streams);
   s.hub->start();
   s.routes();
-  s.listener = std::thread([this] {
-    lower_this_thread_priority();
-    server_->http.listen_after_bind();
-  });
+  s.http->start();
   if (options_.out) {
     std::fprintf(options_.out, "vplant: control plane at %s%s\n", url().c_str(),
                  context.scheduler.mode() == sim::ClockMode::Virtual && options_.clock.start_paused

@@ -13,6 +13,8 @@ namespace {
 constexpr int kMaxPdos = 8;  // per direction and node: what the decoder and the dashboard show
 constexpr sim::Duration kSdoTimeout = sim::milliseconds(1000);
 constexpr auto kSdoWallTimeout = std::chrono::seconds(3);
+constexpr auto kStopPoll = std::chrono::milliseconds(20);  // how soon a paced wait sees a stop
+constexpr double kMaxPaceWaitUs = 3600e6;                  // a wall hour: far beyond any tick
 
 bool same_profile(const devices::ProfileStatus& a, const devices::ProfileStatus& b) {
   return a.profile == b.profile && a.state == b.state && a.control_word == b.control_word &&
@@ -138,15 +140,16 @@ void SimBridge::detach() {
   wake_.notify_all();
 }
 
-bool SimBridge::post(Command command) {
+SimBridge::Posted SimBridge::try_post(Command command) {
   {
     std::lock_guard lk(queue_mu_);
-    if (finished_) return false;
+    if (finished_) return Posted::Ended;
+    if (queue_.size() >= kMaxQueuedCommands) return Posted::Full;
     queue_.push_back(std::move(command));
     wanted_.fetch_or(kWantCommands, std::memory_order_release);
   }
   wake_.notify_all();
-  return true;
+  return Posted::Queued;
 }
 
 bool SimBridge::drain_commands() {
@@ -191,7 +194,7 @@ bool SimBridge::before_tick(bool end_reached) {
       break;
     }
     anchor_valid_ = false;
-    wait_for_work(std::chrono::steady_clock::now() + std::chrono::milliseconds(20));
+    wait_for_work(std::chrono::steady_clock::now() + kStopPoll);
     service();
   }
   return !sched.stop_requested();
@@ -251,10 +254,12 @@ void SimBridge::pace() {
     anchor_valid_ = true;
     return;
   }
-  const auto target = anchor_wall_ + std::chrono::microseconds(static_cast<std::int64_t>(
-                                         static_cast<double>(now_sim - anchor_sim_us_) / speed));
+  // In double, clamped before the conversion: no speed or span can overflow the wall offset.
+  const double wall_us = std::min(static_cast<double>(now_sim - anchor_sim_us_) / speed, kMaxPaceWaitUs);
+  const auto target = anchor_wall_ + std::chrono::microseconds(static_cast<std::int64_t>(wall_us));
   while (!ctx_->scheduler.stop_requested() && std::chrono::steady_clock::now() < target) {
-    wait_for_work(target);
+    // In slices: a stop request (a signal handler sets a flag, it cannot notify) is seen at once.
+    wait_for_work(std::min(target, std::chrono::steady_clock::now() + kStopPoll));
     service();
     if (!anchor_valid_ || speed_.load() != speed) return;  // re-anchored by a clock command
   }
@@ -497,7 +502,12 @@ void SimBridge::sample_signals(std::int64_t now) {
   signal_rows_->commit();
 }
 
-void SimBridge::send_frame(std::size_t bus, const sim::CanFrame& frame) { master(bus).send(frame); }
+bool SimBridge::send_frame(std::size_t bus, const sim::CanFrame& frame) {
+  const auto& stats = ctx_->world.buses()[bus]->stats();
+  const auto refused = stats.tx_queue_overflow;
+  master(bus).send(frame);
+  return stats.tx_queue_overflow == refused;
+}
 
 void SimBridge::add_listener() {
   if (listeners_.fetch_add(1) == 0)

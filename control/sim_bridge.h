@@ -33,6 +33,15 @@
 
 namespace control {
 
+/// Virtual-time speeds a client may ask for: 0 (as fast as possible) or kMinSpeed..kMaxSpeed × wall
+/// clock. Below kMinSpeed a tick would take longer than a wall second per simulated millisecond
+/// tick, which no one watches: refused rather than honoured badly.
+constexpr double kMinSpeed = 0.001;
+constexpr double kMaxSpeed = 1000;
+/// Commands waiting for the next tick boundary; post() refuses more (the HTTP workers, which
+/// wait for their command, never queue more than a few: the bound is for a runaway poster).
+constexpr std::size_t kMaxQueuedCommands = 256;
+
 struct ClockOptions {
   bool start_paused = true;  ///< virtual time: the run waits at t = 0 for the dashboard
   double speed = 1.0;        ///< virtual time: × wall clock while running; 0 = as fast as possible
@@ -81,14 +90,20 @@ class SimBridge final : public scenario::RunExtension {
   void detach() override;
 
   // ---- any thread ---------------------------------------------------------------------------
-  /// Queues a command for the next tick boundary; false once the run has ended.
-  bool post(Command command);
+  enum class Posted { Queued, Full, Ended };
+  /// Queues a command for the next tick boundary: Full at kMaxQueuedCommands, Ended once the
+  /// run has ended.
+  Posted try_post(Command command);
+  bool post(Command command) { return try_post(std::move(command)) == Posted::Queued; }
   /// Runs `f` between ticks and returns its result; nullopt when the run does not answer in time.
   template <typename R>
-  std::optional<R> call(std::function<R(const scenario::RunContext&)> f, std::chrono::milliseconds timeout) {
+  std::optional<R> call(std::function<R(const scenario::RunContext&)> f, std::chrono::milliseconds timeout,
+                        Posted* posted = nullptr) {
     auto promise = std::make_shared<std::promise<R>>();
     auto future = promise->get_future();
-    if (!post([promise, f = std::move(f)](const scenario::RunContext& c) { promise->set_value(f(c)); })) return std::nullopt;
+    const auto p = try_post([promise, f = std::move(f)](const scenario::RunContext& c) { promise->set_value(f(c)); });
+    if (posted) *posted = p;
+    if (p != Posted::Queued) return std::nullopt;
     if (future.wait_for(timeout) != std::future_status::ready) return std::nullopt;
     try {
       return future.get();
@@ -130,8 +145,9 @@ class SimBridge final : public scenario::RunExtension {
   const std::vector<SignalInfo>& signals() const { return signals_; }
   std::int64_t signal_period_us() const { return signal_period_us_; }
 
-  /// Sends a frame from the control plane's endpoint on bus `bus` (scheduler thread: commands).
-  void send_frame(std::size_t bus, const sim::CanFrame& frame);
+  /// Sends a frame from the control plane's endpoint on bus `bus` (scheduler thread: commands);
+  /// false when the bus refused it (its transmit queue for this endpoint is full).
+  bool send_frame(std::size_t bus, const sim::CanFrame& frame);
 
   /// Fault ids: live faults applied by the dashboard (scheduler thread only).
   struct LiveFault {

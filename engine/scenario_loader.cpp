@@ -217,7 +217,8 @@ UiSpec read_ui(const YAML::Node& node, const std::string& file) {
   }
   if (auto sp = r.get("speed")) {
     u.speed = read_number(sp, file, "speed");
-    if (u.speed < 0 || u.speed > 1000) throw LoadError(mark_of(sp, file), "speed: must be between 0 (as fast as possible) and 1000");
+    if (u.speed < 0 || u.speed > 1000 || (u.speed > 0 && u.speed < 0.001))
+      throw LoadError(mark_of(sp, file), "speed: must be 0 (as fast as possible) or between 0.001 and 1000");
   }
   r.finish();
   return u;

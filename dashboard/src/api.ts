@@ -33,7 +33,7 @@ export const api = {
   od: (node: string) => call<OdEntry[]>('GET', `/api/nodes/${encodeURIComponent(node)}/od`),
   sdoWrite: (node: string, body: object) => call<SdoResult>('POST', `/api/nodes/${encodeURIComponent(node)}/sdo`, body),
   sdoRead: (node: string, index: number, sub: number) =>
-    call<SdoResult>('GET', `/api/nodes/${encodeURIComponent(node)}/sdo?index=${index}&sub=${sub}`),
+    call<SdoResult>('POST', `/api/nodes/${encodeURIComponent(node)}/sdo/read`, { index, sub }),
   nmt: (command: string, node: string | 0) => call<{ ok: boolean }>('POST', '/api/nmt', { command, node }),
   faults: () => call<ActiveFault[]>('GET', '/api/faults'),
   injectFault: (fault: object) => call<{ ok: boolean; id: number; active?: boolean }>('POST', '/api/faults', fault),

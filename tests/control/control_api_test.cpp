@@ -177,7 +177,7 @@ TEST_F(ControlApi, SdoWriteOfTheDsvControlWordDrivesTheStateMachineAndShowsInThe
 
 TEST_F(ControlApi, SdoReadsAndRefusals) {
   start_all();
-  auto r = LivePlant::json_of(p().http().Get("/api/nodes/dsv/sdo?index=0x1000&sub=0"));
+  auto r = LivePlant::json_of(p().post("/api/nodes/dsv/sdo/read", {{"index", "0x1000"}, {"sub", 0}}));
   EXPECT_EQ(r["ok"], true);
   EXPECT_EQ(r["data"].get<std::string>().size(), 8u);
   EXPECT_TRUE(r["value"].is_number());
@@ -198,8 +198,8 @@ TEST_F(ControlApi, SdoReadsAndRefusals) {
   EXPECT_EQ(status(p().post("/api/nodes/dsv/sdo", {{"index", 0x6040}, {"data", "0G"}})), 400);      // bad hex
   EXPECT_EQ(status(p().post("/api/nodes/dsv/sdo", {{"index", 0x5FFF}, {"value", 1}})), 400);        // unknown object
   EXPECT_EQ(status(p().post("/api/nodes/ghost/sdo", {{"index", 0x6040}, {"value", 1}})), 404);
-  EXPECT_EQ(status(p().http().Get("/api/nodes/dsv/sdo")), 400);
-  EXPECT_EQ(status(p().http().Get("/api/nodes/dsv/sdo?index=banana")), 400);
+  EXPECT_EQ(status(p().post("/api/nodes/dsv/sdo/read", json::object())), 400);
+  EXPECT_EQ(status(p().post("/api/nodes/dsv/sdo/read", {{"index", "banana"}})), 400);
 }
 
 TEST_F(ControlApi, ObjectDictionaryListsEntriesWithValues) {

@@ -53,12 +53,21 @@ class LivePlant {
     client_->set_read_timeout(10, 0);
   }
   ~LivePlant() {
-    for (int i = 0; i < 500 && !runner_; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    if (auto* r = runner_.load()) r->request_stop();
-    thread_.join();
+    stop();
     plane_.reset();
     std::fclose(out_);
   }
+  /// Stops the run as SIGINT does (Runner::request_stop) and waits for it; returns how long the
+  /// run took to end, outputs written.
+  std::chrono::milliseconds stop() {
+    if (!thread_.joinable()) return {};
+    for (int i = 0; i < 500 && !runner_; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const auto t0 = std::chrono::steady_clock::now();
+    if (auto* r = runner_.load()) r->request_stop();
+    thread_.join();
+    return std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0);
+  }
+  int exit_code() const { return rc_; }
 
   httplib::Client& http() { return *client_; }
   int port() const { return plane_->port(); }

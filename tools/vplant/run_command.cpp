@@ -114,7 +114,10 @@ Runner add_run_command(CLI::App& app) {
   app.add_flag("--ui-allow-remote", a->ui_allow_remote, "allow --ui on a non-loopback address (no authentication!)");
   app.add_flag("--ui-run", a->ui_run, "virtual time with --ui: start running instead of paused");
   app.add_option("--ui-speed", a->ui_speed, "virtual time with --ui: × wall clock while running (0 = as fast as possible; default 1)")
-      ->check(CLI::Range(0.0, 1000.0));
+      ->check(CLI::Range(0.0, 1000.0))
+      ->check([](const std::string& v) {
+        return std::stod(v) == 0 || std::stod(v) >= 0.001 ? std::string() : std::string("0 or 0.001..1000");
+      });
   app.add_flag("--strict", a->strict, "EDS nodes: reject the CiA 306 deviations that are otherwise loaded with a warning");
   return [a] { return run(*a); };
 }
