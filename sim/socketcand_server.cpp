@@ -43,6 +43,7 @@ struct SocketcandServer::Client {
   socketcand::Splitter in;
   std::string out;
   std::int64_t settle_until_ms = 0;  // frames are held until then (see kRawmodeSettleMs)
+  std::uint64_t errors = 0;          // messages answered with `< error ... >`
 };
 
 std::unique_ptr<SocketcandServer> SocketcandServer::open(const std::string& channel, const TcpEndpoint& endpoint,
@@ -199,7 +200,8 @@ void SocketcandServer::read_client(Client& c) {
 void SocketcandServer::handle(Client& c, std::string_view text) {
   socketcand::Message m;
   std::string error;
-  if (!socketcand::parse(text, m, error)) return drop(c, error);
+  // A complete message that does not parse is answered and skipped: the stream is still in step.
+  if (!socketcand::parse(text, m, error)) return refuse(c, error);
   using Kind = socketcand::Kind;
   if (c.mode == Client::Mode::NoBus) {
     if (m.kind == Kind::Open) {
@@ -208,7 +210,7 @@ void SocketcandServer::handle(Client& c, std::string_view text) {
       return enqueue(c, "< ok >");
     }
     if (m.kind == Kind::Echo) return enqueue(c, "\n< echo >");
-    return drop(c, "expected '< open " + channel_ + " >' first");
+    return refuse(c, "expected '< open " + channel_ + " >' first");
   }
   switch (m.kind) {
     case Kind::Rawmode:
@@ -225,8 +227,16 @@ void SocketcandServer::handle(Client& c, std::string_view text) {
     case Kind::Send:
       return forward_from(c, m.frame);
     default:
-      return drop(c, "unexpected '" + std::string(text.substr(0, 24)) + "' from a client");
+      return refuse(c, "unexpected '" + std::string(text.substr(0, 24)) + "' from a client");
   }
+}
+
+void SocketcandServer::refuse(Client& c, const std::string& reason) {
+  ++c.errors;
+  if (c.errors == 1 || c.errors % 1000 == 0)
+    log(LogLevel::Warn, "socketcand: bus '{}': client {}: {} ({} refused message(s) so far)", channel_, c.peer, reason,
+        c.errors);
+  enqueue(c, "\n< error " + error_text(reason) + " >");
 }
 
 void SocketcandServer::forward_from(Client& from, const CanFrame& frame) {

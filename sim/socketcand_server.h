@@ -4,8 +4,11 @@
 //
 // Every client in raw mode receives every frame of the bus (the plant's and the other clients'),
 // stamped with the wall clock; a frame a client sends reaches the bus and the other clients, not
-// the sender (like a CAN_RAW socket). A client that breaks the protocol or stops reading is closed
-// with a logged reason; nothing a client does reaches the simulation except well-formed frames.
+// the sender (like a CAN_RAW socket). A message the server cannot use (bad field, unknown or
+// unsupported command) is answered with `< error REASON >` and the connection stays; a client
+// that breaks the framing (bytes outside `< >`, an overlong message), opens another bus or stops
+// reading is closed with a logged reason. Nothing a client does reaches the simulation except
+// well-formed frames.
 // Its name (the trace's interface column) is the bus name, as on the in-process bus.
 #pragma once
 
@@ -54,6 +57,8 @@ class SocketcandServer final : public QueuedTransport {
   void enqueue(Client& c, std::string_view text);
   void flush(Client& c);
   void drop(Client& c, const std::string& reason);
+  /// Answers `< error REASON >` and keeps the connection (a well-delimited message it cannot use).
+  void refuse(Client& c, const std::string& reason);
 
   std::string channel_;
   int listen_fd_ = -1;
