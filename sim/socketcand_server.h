@@ -23,6 +23,15 @@
 
 namespace sim {
 
+/// How long a connection may hold a slot without using it (wall clock, milliseconds).
+struct SocketcandLimits {
+  /// From connect to `< open CHANNEL >`: a connection that never opens the bus is closed.
+  int handshake_ms = 5000;
+  /// A client in BCM mode (it receives no frames) that sends nothing for this long is closed.
+  /// A raw-mode client receives the bus and is never idle; it is closed if it stops reading.
+  int bcm_idle_ms = 60000;
+};
+
 class SocketcandServer final : public QueuedTransport {
  public:
   static constexpr int kMaxClients = 16;
@@ -34,10 +43,12 @@ class SocketcandServer final : public QueuedTransport {
   /// one recv() and fails if frames arrive in the same segment.
   static constexpr int kRawmodeSettleMs = 200;
 
+  using Limits = SocketcandLimits;
+
   /// Listens on `endpoint` for clients of bus `channel`. Port 0 picks a free port (see port()).
   /// A non-loopback address is allowed and logged as a warning. nullptr + `error` on failure.
   static std::unique_ptr<SocketcandServer> open(const std::string& channel, const TcpEndpoint& endpoint,
-                                                std::string& error);
+                                                std::string& error, Limits limits = {});
   ~SocketcandServer() override;
 
   std::uint16_t port() const { return port_; }
@@ -47,7 +58,10 @@ class SocketcandServer final : public QueuedTransport {
 
  private:
   struct Client;
-  SocketcandServer(std::string name, std::string channel, int listen_fd, std::uint16_t port);
+  SocketcandServer(std::string name, std::string channel, int listen_fd, std::uint16_t port, Limits limits);
+  /// Closes the clients whose handshake or idle time is up; returns the ms until the next such
+  /// deadline (-1: none).
+  int expire_clients(std::int64_t now_ms);
   void run();
   void accept_clients();
   void read_client(Client& c);
@@ -61,6 +75,7 @@ class SocketcandServer final : public QueuedTransport {
   void refuse(Client& c, const std::string& reason);
 
   std::string channel_;
+  Limits limits_;
   int listen_fd_ = -1;
   std::uint16_t port_ = 0;
   std::vector<std::unique_ptr<Client>> clients_;  // server thread only

@@ -346,6 +346,59 @@ TEST(SocketcandServer, RefusesClientsBeyondTheLimit) {
   EXPECT_EQ(one_too_many.last_message_before_close(), "< error too many clients >");
 }
 
+TEST(SocketcandServer, SilentConnectionsCannotHoldTheSlots) {
+  // Every slot taken by a connection that never sends: each is closed when its handshake time is
+  // up, and a real master then gets in.
+  std::string error;
+  sim::SocketcandServer::Limits limits;
+  limits.handshake_ms = 300;
+  auto server = sim::SocketcandServer::open("main", sim::TcpEndpoint{"127.0.0.1", 0}, error, limits);
+  ASSERT_TRUE(server) << error;
+  std::vector<std::unique_ptr<TcpClient>> silent;
+  for (int i = 0; i < sim::SocketcandServer::kMaxClients; ++i) {
+    silent.push_back(std::make_unique<TcpClient>(server->port()));
+    EXPECT_EQ(silent.back()->next(), "< hi >");
+  }
+  EXPECT_TRUE(wait_for([&] { return server->client_count() == sim::SocketcandServer::kMaxClients; }));
+  TcpClient refused(server->port());
+  EXPECT_EQ(refused.last_message_before_close(), "< error too many clients >");
+  for (auto& c : silent)
+    EXPECT_EQ(c->last_message_before_close(), "< error no '? open main ?' within 300 ms of connecting >");
+  EXPECT_TRUE(wait_for([&] { return server->client_count() == 0; }));
+  TcpClient master(server->port());
+  master.handshake();
+  server->send(kHeartbeat);
+  server->service(sim::Time{});
+  EXPECT_EQ(master.next_frame(), kHeartbeat);
+  // A raw-mode client that only listens is not idle: it outlives the handshake limit.
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  server->send(kSdo);
+  server->service(sim::Time{});
+  EXPECT_EQ(master.next_frame(), kSdo);
+  EXPECT_EQ(server->client_count(), 1);
+}
+
+TEST(SocketcandServer, AClientIdleInBcmModeIsClosedAndOneThatTalksIsNot) {
+  std::string error;
+  sim::SocketcandServer::Limits limits;
+  limits.bcm_idle_ms = 300;
+  auto server = sim::SocketcandServer::open("main", sim::TcpEndpoint{"127.0.0.1", 0}, error, limits);
+  ASSERT_TRUE(server) << error;
+  TcpClient idle(server->port()), talking(server->port());
+  for (auto* c : {&idle, &talking}) {
+    EXPECT_EQ(c->next(), "< hi >");
+    c->send("< open main >");
+    EXPECT_EQ(c->next(), "< ok >");
+  }
+  for (int i = 0; i < 5; ++i) {  // 500 ms, an echo every 100 ms
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    talking.send("< echo >");
+    EXPECT_EQ(talking.next(), "< echo >");
+  }
+  EXPECT_EQ(idle.last_message_before_close(), "< error idle in BCM mode for 300 ms >");
+  EXPECT_EQ(server->client_count(), 1);
+}
+
 TEST(SocketcandClient, JoinsAServerAndExchangesFramesBothWays) {
   auto server = serve("can0");
   std::string error;
