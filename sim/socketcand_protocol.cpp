@@ -87,6 +87,16 @@ bool parse_dlc(std::string_view t, CanFrame& f, std::string& error) {
   return true;
 }
 
+// python-can 4.1 (Debian 12) writes every frame as `< send ID DLC B.. >` and a remote frame's
+// data is empty, so its remote frames arrive as `< send ID N >` without bytes. With N >= 1 that
+// can only be a remote frame (a data frame of DLC N carries N bytes). With N = 0 it is, by the
+// protocol, a data frame without data (a SYNC), except on 701h-77Fh: there CANopen's NMT error
+// control has no empty data frame, and python-canopen's node guarding sends exactly this.
+bool reads_as_remote(const CanFrame& f) {
+  if (f.dlc > 0) return true;
+  return !f.extended && f.id >= kGuardingFirst && f.id <= kGuardingLast;
+}
+
 bool parse_byte(std::string_view t, std::uint8_t& b, std::string& error) {
   if (t.empty() || t.size() > 2 || hex_value(t[0]) < 0 || (t.size() == 2 && hex_value(t[1]) < 0)) {
     error = "bad hex byte " + quoted(t);
@@ -180,6 +190,10 @@ bool parse(std::string_view message, Message& out, std::string& error) {
     if (n < 3) return expect_fields(cmd, n, 3, error);
     out.kind = Kind::Send;
     if (!parse_id(t[1], out.frame, error) || !parse_dlc(t[2], out.frame, error)) return false;
+    if (n == 3 && reads_as_remote(out.frame)) {
+      out.frame.rtr = true;
+      return true;
+    }
     if (n - 3 != out.frame.dlc) {
       error = fmt::format("DLC {} but {} data byte(s)", out.frame.dlc, n - 3);
       return false;

@@ -20,6 +20,11 @@ inline constexpr std::size_t kMaxMessage = 128;
 /// Room for any message this module formats.
 inline constexpr std::size_t kFormatMax = 64;
 
+/// `< send ID 0 >` (no bytes) on these identifiers is read as a remote frame: CANopen node
+/// guarding's request (0x700 + node-ID 1..127), as python-can 4.1 writes it (see parse()).
+inline constexpr std::uint32_t kGuardingFirst = 0x701;
+inline constexpr std::uint32_t kGuardingLast = 0x77F;
+
 enum class Kind {
   Hi,        ///< `< hi >` (server greeting)
   Ok,        ///< `< ok >`
@@ -42,6 +47,9 @@ struct Message {
 
 /// Parses one complete message `< ... >` (brackets included). On failure returns false and sets
 /// `error` to a reason naming the field ("bad hex byte 'G1'", "DLC 9 exceeds 8", ...).
+/// `< send ID N >` without data bytes is a remote frame of DLC N when N >= 1 (python-can 4.1 sends
+/// remote frames so), and when N = 0 on kGuardingFirst..kGuardingLast; elsewhere with N = 0 it
+/// is a data frame without data, as the protocol defines it.
 bool parse(std::string_view message, Message& out, std::string& error);
 
 /// `< frame 123 12.000345 1122 >` as socketcand's raw mode sends it (IDs padded to 3 or 8 hex

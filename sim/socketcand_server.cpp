@@ -43,10 +43,13 @@ struct SocketcandServer::Client {
   socketcand::Splitter in;
   std::string out;
   std::int64_t settle_until_ms = 0;  // frames are held until then (see kRawmodeSettleMs)
+  std::uint64_t errors = 0;          // messages answered with `< error ... >`
+  std::int64_t connected_ms = 0;     // for the handshake limit
+  std::int64_t last_input_ms = 0;    // for the BCM-mode idle limit
 };
 
 std::unique_ptr<SocketcandServer> SocketcandServer::open(const std::string& channel, const TcpEndpoint& endpoint,
-                                                         std::string& error) {
+                                                         std::string& error, Limits limits) {
   const auto addr = resolve_tcp(endpoint, error);
   if (!addr) return nullptr;
   const int fd = ::socket(addr->family, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
@@ -69,7 +72,7 @@ std::unique_ptr<SocketcandServer> SocketcandServer::open(const std::string& chan
   std::uint16_t port = endpoint.port;
   if (bound.ss_family == AF_INET) port = ntohs(reinterpret_cast<const sockaddr_in*>(&bound)->sin_port);
   if (bound.ss_family == AF_INET6) port = ntohs(reinterpret_cast<const sockaddr_in6*>(&bound)->sin6_port);
-  std::unique_ptr<SocketcandServer> server(new SocketcandServer(channel, channel, fd, port));
+  std::unique_ptr<SocketcandServer> server(new SocketcandServer(channel, channel, fd, port, limits));
   if (!server->eventfds_ok()) {
     error = std::string("socketcand server: eventfd: ") + std::strerror(errno);
     return nullptr;
@@ -82,8 +85,9 @@ std::unique_ptr<SocketcandServer> SocketcandServer::open(const std::string& chan
   return server;
 }
 
-SocketcandServer::SocketcandServer(std::string name, std::string channel, int listen_fd, std::uint16_t port)
-    : QueuedTransport(std::move(name)), channel_(std::move(channel)), listen_fd_(listen_fd), port_(port) {}
+SocketcandServer::SocketcandServer(std::string name, std::string channel, int listen_fd, std::uint16_t port,
+                                   Limits limits)
+    : QueuedTransport(std::move(name)), channel_(std::move(channel)), limits_(limits), listen_fd_(listen_fd), port_(port) {}
 
 SocketcandServer::~SocketcandServer() {
   request_stop();
@@ -96,7 +100,7 @@ void SocketcandServer::run() {
   std::vector<pollfd> fds;
   while (!stop_requested()) {
     const std::int64_t now = monotonic_ms();
-    int timeout = -1;
+    int timeout = expire_clients(now);
     fds.clear();
     fds.push_back(pollfd{io_wake_fd(), POLLIN, 0});
     fds.push_back(pollfd{listen_fd_, POLLIN, 0});
@@ -133,6 +137,24 @@ void SocketcandServer::run() {
   clients.clear();
 }
 
+int SocketcandServer::expire_clients(std::int64_t now_ms) {
+  std::int64_t next = -1;
+  const auto until = [&](std::int64_t deadline) {
+    if (deadline > now_ms && (next < 0 || deadline - now_ms < next)) next = deadline - now_ms;
+    return deadline <= now_ms;
+  };
+  for (auto& c : clients_) {
+    if (c->fd < 0) continue;
+    if (c->mode == Client::Mode::NoBus && until(c->connected_ms + limits_.handshake_ms))
+      drop(*c, "no '< open " + channel_ + " >' within " + std::to_string(limits_.handshake_ms) + " ms of connecting");
+    else if (c->mode == Client::Mode::Bcm && until(c->last_input_ms + limits_.bcm_idle_ms))
+      drop(*c, "idle in BCM mode for " + std::to_string(limits_.bcm_idle_ms) + " ms");
+  }
+  std::erase_if(clients_, [](const auto& c) { return c->fd < 0; });
+  clients_now_.store(static_cast<int>(clients_.size()), std::memory_order_relaxed);
+  return static_cast<int>(std::min<std::int64_t>(next, 1000 * 1000));
+}
+
 void SocketcandServer::accept_clients() {
   for (;;) {
     sockaddr_storage peer{};
@@ -153,6 +175,7 @@ void SocketcandServer::accept_clients() {
     auto c = std::make_unique<Client>();
     c->fd = fd;
     c->peer = who;
+    c->connected_ms = c->last_input_ms = monotonic_ms();
     c->out.reserve(64 * 1024);  // grows (on this thread) up to kMaxPendingOutput if needed
     log(LogLevel::Info, "socketcand: bus '{}': client {} connected", channel_, who);
     enqueue(*c, "< hi >");
@@ -177,6 +200,7 @@ void SocketcandServer::read_client(Client& c) {
       c.fd = -1;
       return;
     }
+    c.last_input_ms = monotonic_ms();
     std::string_view rest(buf, static_cast<std::size_t>(n));
     while (!rest.empty() && c.fd >= 0) {
       rest.remove_prefix(c.in.feed(rest));
@@ -199,7 +223,8 @@ void SocketcandServer::read_client(Client& c) {
 void SocketcandServer::handle(Client& c, std::string_view text) {
   socketcand::Message m;
   std::string error;
-  if (!socketcand::parse(text, m, error)) return drop(c, error);
+  // A complete message that does not parse is answered and skipped: the stream is still in step.
+  if (!socketcand::parse(text, m, error)) return refuse(c, error);
   using Kind = socketcand::Kind;
   if (c.mode == Client::Mode::NoBus) {
     if (m.kind == Kind::Open) {
@@ -208,7 +233,7 @@ void SocketcandServer::handle(Client& c, std::string_view text) {
       return enqueue(c, "< ok >");
     }
     if (m.kind == Kind::Echo) return enqueue(c, "\n< echo >");
-    return drop(c, "expected '< open " + channel_ + " >' first");
+    return refuse(c, "expected '< open " + channel_ + " >' first");
   }
   switch (m.kind) {
     case Kind::Rawmode:
@@ -225,8 +250,16 @@ void SocketcandServer::handle(Client& c, std::string_view text) {
     case Kind::Send:
       return forward_from(c, m.frame);
     default:
-      return drop(c, "unexpected '" + std::string(text.substr(0, 24)) + "' from a client");
+      return refuse(c, "unexpected '" + std::string(text.substr(0, 24)) + "' from a client");
   }
+}
+
+void SocketcandServer::refuse(Client& c, const std::string& reason) {
+  ++c.errors;
+  if (c.errors == 1 || c.errors % 1000 == 0)
+    log(LogLevel::Warn, "socketcand: bus '{}': client {}: {} ({} refused message(s) so far)", channel_, c.peer, reason,
+        c.errors);
+  enqueue(c, "\n< error " + error_text(reason) + " >");
 }
 
 void SocketcandServer::forward_from(Client& from, const CanFrame& frame) {

@@ -4,8 +4,11 @@
 //
 // Every client in raw mode receives every frame of the bus (the plant's and the other clients'),
 // stamped with the wall clock; a frame a client sends reaches the bus and the other clients, not
-// the sender (like a CAN_RAW socket). A client that breaks the protocol or stops reading is closed
-// with a logged reason; nothing a client does reaches the simulation except well-formed frames.
+// the sender (like a CAN_RAW socket). A message the server cannot use (bad field, unknown or
+// unsupported command) is answered with `< error REASON >` and the connection stays; a client
+// that breaks the framing (bytes outside `< >`, an overlong message), opens another bus or stops
+// reading is closed with a logged reason. Nothing a client does reaches the simulation except
+// well-formed frames.
 // Its name (the trace's interface column) is the bus name, as on the in-process bus.
 #pragma once
 
@@ -20,6 +23,15 @@
 
 namespace sim {
 
+/// How long a connection may hold a slot without using it (wall clock, milliseconds).
+struct SocketcandLimits {
+  /// From connect to `< open CHANNEL >`: a connection that never opens the bus is closed.
+  int handshake_ms = 5000;
+  /// A client in BCM mode (it receives no frames) that sends nothing for this long is closed.
+  /// A raw-mode client receives the bus and is never idle; it is closed if it stops reading.
+  int bcm_idle_ms = 60000;
+};
+
 class SocketcandServer final : public QueuedTransport {
  public:
   static constexpr int kMaxClients = 16;
@@ -31,10 +43,12 @@ class SocketcandServer final : public QueuedTransport {
   /// one recv() and fails if frames arrive in the same segment.
   static constexpr int kRawmodeSettleMs = 200;
 
+  using Limits = SocketcandLimits;
+
   /// Listens on `endpoint` for clients of bus `channel`. Port 0 picks a free port (see port()).
   /// A non-loopback address is allowed and logged as a warning. nullptr + `error` on failure.
   static std::unique_ptr<SocketcandServer> open(const std::string& channel, const TcpEndpoint& endpoint,
-                                                std::string& error);
+                                                std::string& error, Limits limits = {});
   ~SocketcandServer() override;
 
   std::uint16_t port() const { return port_; }
@@ -44,7 +58,10 @@ class SocketcandServer final : public QueuedTransport {
 
  private:
   struct Client;
-  SocketcandServer(std::string name, std::string channel, int listen_fd, std::uint16_t port);
+  SocketcandServer(std::string name, std::string channel, int listen_fd, std::uint16_t port, Limits limits);
+  /// Closes the clients whose handshake or idle time is up; returns the ms until the next such
+  /// deadline (-1: none).
+  int expire_clients(std::int64_t now_ms);
   void run();
   void accept_clients();
   void read_client(Client& c);
@@ -54,8 +71,11 @@ class SocketcandServer final : public QueuedTransport {
   void enqueue(Client& c, std::string_view text);
   void flush(Client& c);
   void drop(Client& c, const std::string& reason);
+  /// Answers `< error REASON >` and keeps the connection (a well-delimited message it cannot use).
+  void refuse(Client& c, const std::string& reason);
 
   std::string channel_;
+  Limits limits_;
   int listen_fd_ = -1;
   std::uint16_t port_ = 0;
   std::vector<std::unique_ptr<Client>> clients_;  // server thread only

@@ -9,15 +9,12 @@ the nodes and moves the cylinder, mirroring the scenario's own scripted master.
 usage: socketcand_master_test.py VPLANT SCENARIO
 """
 import os
-import shutil
-import signal
-import socket
 import struct
-import subprocess
 import sys
-import tempfile
-import threading
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from socketcand_harness import Failure, check, served_plant, stop  # noqa: E402
 
 try:
     import can
@@ -27,10 +24,6 @@ except ImportError:
 SYNC_PERIOD = 0.010
 SDO_TIMEOUT = 2.0  # generous: sanitizer builds run the plant slower than real time
 DSV, MD2, HLT, VTVPCD, WDGA = 2, 3, 5, 63, 127
-
-
-class Failure(Exception):
-    pass
 
 
 class Master:
@@ -102,12 +95,6 @@ class Master:
             raise Failure(f"node {node}: unexpected download answer {reply.hex()}")
 
 
-def check(condition, text):
-    if not condition:
-        raise Failure(text)
-    print("ok:", text, flush=True)
-
-
 def position_mm(data):
     # HLT 1100 TPDO2: position (6004h), i32 in 0.1 mm steps (docs/devices/hlt1100.md).
     return struct.unpack_from("<i", data, 0)[0] * 0.1
@@ -162,75 +149,22 @@ def drive(master):
     master.run_for(0.2)
 
 
-class StderrReader(threading.Thread):
-    def __init__(self, stream):
-        super().__init__(daemon=True)
-        self.stream, self.lines, self.served = stream, [], threading.Event()
-
-    def run(self):
-        for line in self.stream:
-            self.lines.append(line)
-            if "socketcand: bus 'main' served on" in line:
-                self.served.set()
-
-
-def free_port():
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def main():
     vplant, scenario = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
-    workdir = tempfile.mkdtemp(prefix="vplant-socketcand-")  # the scenario's outputs land here
-    proc = None
     try:
-        for attempt in range(3):  # the free port may be taken between the probe and vplant's bind
-            port = free_port()
-            proc = subprocess.Popen([vplant, "run", scenario, "--no-script", "--realtime", "--duration", "40",
-                                     "--can", f"main=socketcand:127.0.0.1:{port}"],
-                                    cwd=workdir, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-            reader = StderrReader(proc.stderr)
-            reader.start()
-            deadline = time.monotonic() + 20
-            while not reader.served.wait(0.1) and proc.poll() is None and time.monotonic() < deadline:
-                pass
-            if reader.served.is_set():
-                break
-            proc.kill()
-            proc.wait()
-            sys.stderr.write("".join(reader.lines))
-            proc = None
-        if proc is None:
-            raise Failure("vplant did not serve the bus")
-        bus = can.Bus(interface="socketcand", host="127.0.0.1", port=port, channel="main")
-        try:
-            master = Master(bus)
-            drive(master)
-            print(f"{master.frames} frames received", flush=True)
-        finally:
-            bus.shutdown()
-        proc.send_signal(signal.SIGINT)
-        out, _ = proc.communicate(timeout=15)
-        reader.join(5)
-        sys.stderr.write("".join(reader.lines))
-        if proc.returncode != 0:
-            raise Failure(f"vplant exited with {proc.returncode}:\n{out}")
-        print(out, end="")
+        with served_plant(vplant, scenario) as (proc, port, reader):
+            bus = can.Bus(interface="socketcand", host="127.0.0.1", port=port, channel="main")
+            try:
+                master = Master(bus)
+                drive(master)
+                print(f"{master.frames} frames received", flush=True)
+            finally:
+                bus.shutdown()
+            stop(proc, reader)
         return 0
     except Failure as e:
-        if proc is not None and proc.poll() is None:
-            proc.send_signal(signal.SIGINT)
-            proc.wait(10)
-            reader.join(5)
-            sys.stderr.write("".join(reader.lines))
         print(f"FAILED: {e}", file=sys.stderr)
         return 1
-    finally:
-        if proc is not None and proc.poll() is None:
-            proc.kill()
-            proc.wait()
-        shutil.rmtree(workdir, ignore_errors=True)
 
 
 if __name__ == "__main__":

@@ -77,6 +77,29 @@ TEST(SocketcandProtocol, ParsesWhatPythonCanSends) {
   EXPECT_EQ(m.frame, extended(0x123, {}));
 }
 
+TEST(SocketcandProtocol, ReadsPythonCan41RemoteFrames) {
+  // python-can 4.1 writes a remote frame as `< send ID DLC >` with no bytes (its data is empty).
+  auto m = parse_ok("< send 705 1  >");
+  EXPECT_EQ(m.kind, sc::Kind::Send);
+  EXPECT_EQ(m.frame, sim::CanFrame::remote_frame(0x705, 1));
+  m = parse_ok("< send 1AAAAAAA 8  >");
+  auto ext = sim::CanFrame::remote_frame(0x1AAAAAAA, 8);
+  ext.extended = true;
+  EXPECT_EQ(m.frame, ext);
+  // DLC 0 on node guarding's COB-IDs (python-canopen's guard request) is a remote frame ...
+  EXPECT_EQ(parse_ok("< send 705 0  >").frame, sim::CanFrame::remote_frame(0x705, 0));
+  EXPECT_EQ(parse_ok("< send 701 0 >").frame, sim::CanFrame::remote_frame(0x701, 0));
+  EXPECT_EQ(parse_ok("< send 77F 0 >").frame, sim::CanFrame::remote_frame(0x77F, 0));
+  // ... and elsewhere the protocol's data frame without data (SYNC, LSS, 700h, extended 705h).
+  EXPECT_EQ(parse_ok("< send 80 0  >").frame, sim::CanFrame::data_frame(0x080, {}));
+  EXPECT_EQ(parse_ok("< send 700 0 >").frame, sim::CanFrame::data_frame(0x700, {}));
+  EXPECT_EQ(parse_ok("< send 780 0 >").frame, sim::CanFrame::data_frame(0x780, {}));
+  EXPECT_FALSE(parse_ok("< send 00000705 0 >").frame.rtr);
+  // The protocol's own spelling still works; a data frame of DLC N still needs N bytes.
+  EXPECT_EQ(parse_ok("< sendrtr 705 0 >").frame, sim::CanFrame::remote_frame(0x705, 0));
+  EXPECT_FALSE(parse_ok("< send 705 1 05 >").frame.rtr);
+}
+
 TEST(SocketcandProtocol, ParsesHandshakeAndControlMessages) {
   EXPECT_EQ(parse_ok("< hi >").kind, sc::Kind::Hi);
   EXPECT_EQ(parse_ok("< ok >").kind, sc::Kind::Ok);

@@ -84,6 +84,9 @@ class TcpClient {
   }
   void handshake(const std::string& channel = "main") {
     EXPECT_EQ(next(), "< hi >");
+    handshake_after_hi(channel);
+  }
+  void handshake_after_hi(const std::string& channel = "main") {
     send("< open " + channel + " >");
     EXPECT_EQ(next(), "< ok >");
     send("< rawmode >");
@@ -231,6 +234,15 @@ TEST(SocketcandServer, ExtendedAndRemoteFramesCrossBothWays) {
   EXPECT_EQ(f, ext);
   ASSERT_TRUE(receive_within(*server, f));
   EXPECT_EQ(f, sim::CanFrame::remote_frame(0x701, 1));
+  // python-can 4.1's remote frames: no data bytes (see socketcand::parse).
+  a.send("< send 705 0  >< send 185 8  >");
+  ASSERT_TRUE(receive_within(*server, f));
+  EXPECT_EQ(f, sim::CanFrame::remote_frame(0x705, 0));
+  ASSERT_TRUE(receive_within(*server, f));
+  EXPECT_EQ(f, sim::CanFrame::remote_frame(0x185, 8));
+  server->send(sim::CanFrame::remote_frame(0x705, 1));
+  server->service(sim::Time{});
+  EXPECT_EQ(a.next_frame(), sim::CanFrame::remote_frame(0x705, 1));  // `< rtr 705 SEC.USEC 1 >`
   server->send(ext);
   server->service(sim::Time{});
   EXPECT_EQ(a.next_frame(), ext);
@@ -239,13 +251,14 @@ TEST(SocketcandServer, ExtendedAndRemoteFramesCrossBothWays) {
 struct BadInput {
   const char* name;
   bool before_open;     // sent instead of the handshake
+  bool closes;          // the stream cannot be resynchronised (or the bus is wrong): closed
   std::string text;
-  std::string reason;   // the `< error ... >` the client gets before the close
+  std::string reason;   // the `< error ... >` the client gets
 };
 
 class SocketcandBadClient : public ::testing::TestWithParam<BadInput> {};
 
-TEST_P(SocketcandBadClient, IsClosedWithAReasonWhileTheBusAndOtherClientsContinue) {
+TEST_P(SocketcandBadClient, GetsAReasonWhileTheBusAndOtherClientsContinue) {
   const auto& bad_input = GetParam();
   auto server = serve();
   TcpClient good(server->port()), bad(server->port());
@@ -256,11 +269,24 @@ TEST_P(SocketcandBadClient, IsClosedWithAReasonWhileTheBusAndOtherClientsContinu
     bad.handshake();
   }
   bad.send(bad_input.text);
-  EXPECT_EQ(bad.last_message_before_close(), "< error " + bad_input.reason + " >");
-  EXPECT_TRUE(wait_for([&] { return server->clients_dropped() == 1 && server->client_count() == 1; }));
+  sim::CanFrame f;
+  if (bad_input.closes) {
+    EXPECT_EQ(bad.last_message_before_close(), "< error " + bad_input.reason + " >");
+    EXPECT_TRUE(wait_for([&] { return server->clients_dropped() == 1 && server->client_count() == 1; }));
+  } else {
+    // A well-delimited message it cannot use: answered, and the connection carries on.
+    EXPECT_EQ(bad.next(), "< error " + bad_input.reason + " >");
+    if (bad_input.before_open) bad.handshake_after_hi();
+    EXPECT_FALSE(server->receive(f));
+    bad.send("< send 601 8 40 0 10 0 0 0 0 0 >");
+    ASSERT_TRUE(receive_within(*server, f));
+    EXPECT_EQ(f, kSdo);
+    EXPECT_EQ(good.next_frame(), kSdo);
+    EXPECT_EQ(server->clients_dropped(), 0u);
+    EXPECT_EQ(server->client_count(), 2);
+  }
 
   // Nothing of it reached the bus; the good client still has the bus both ways.
-  sim::CanFrame f;
   EXPECT_FALSE(server->receive(f));
   good.send("< send 601 8 40 0 10 0 0 0 0 0 >");
   ASSERT_TRUE(receive_within(*server, f));
@@ -273,15 +299,16 @@ TEST_P(SocketcandBadClient, IsClosedWithAReasonWhileTheBusAndOtherClientsContinu
 INSTANTIATE_TEST_SUITE_P(
     EveryClassOfBadInput, SocketcandBadClient,
     ::testing::Values(
-        BadInput{"garbage", false, "GET / HTTP/1.1\r\n", "bytes outside a '? ... ?' message: 'GET / HTTP/1.1\\x0D\\x0A'"},
-        BadInput{"overlong", false, "< send " + std::string(300, '1'), "message longer than 128 bytes"},
-        BadInput{"bad_hex", false, "< send 123 1 G1 >", "bad hex byte 'G1'"},
-        BadInput{"wrong_dlc", false, "< send 123 3 1 2 >", "DLC 3 but 2 data byte(s)"},
-        BadInput{"dlc_over_8", false, "< send 123 9 1 2 3 4 5 6 7 8 9 >", "DLC 9 exceeds 8"},
-        BadInput{"unknown_command", false, "< subscribe 0 0 123 >", "unknown command 'subscribe'"},
-        BadInput{"server_message", false, "< frame 123 1.0 00 >", "unexpected '? frame 123 1.0 00 ?' from a client"},
-        BadInput{"unknown_bus", true, "< open can0 >", "unknown bus 'can0' (this server has 'main')"},
-        BadInput{"send_before_open", true, "< send 123 0 >", "expected '? open main ?' first"}),
+        BadInput{"garbage", false, true, "GET / HTTP/1.1\r\n", "bytes outside a '? ... ?' message: 'GET / HTTP/1.1\\x0D\\x0A'"},
+        BadInput{"overlong", false, true, "< send " + std::string(300, '1'), "message longer than 128 bytes"},
+        BadInput{"unknown_bus", true, true, "< open can0 >", "unknown bus 'can0' (this server has 'main')"},
+        BadInput{"bad_hex", false, false, "< send 123 1 G1 >", "bad hex byte 'G1'"},
+        BadInput{"wrong_dlc", false, false, "< send 123 3 1 2 >", "DLC 3 but 2 data byte(s)"},
+        BadInput{"dlc_over_8", false, false, "< send 123 9 1 2 3 4 5 6 7 8 9 >", "DLC 9 exceeds 8"},
+        BadInput{"unknown_command", false, false, "< subscribe 0 0 123 >", "unknown command 'subscribe'"},
+        BadInput{"non_printable", false, false, "< send 123 0 \x01 >", "non-printable byte 0x01 in a message"},
+        BadInput{"server_message", false, false, "< frame 123 1.0 00 >", "unexpected '? frame 123 1.0 00 ?' from a client"},
+        BadInput{"send_before_open", true, false, "< send 123 0 >", "expected '? open main ?' first"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST(SocketcandServer, AClientThatNeverReadsIsDroppedAndTheTransportNeverBlocks) {
@@ -317,6 +344,59 @@ TEST(SocketcandServer, RefusesClientsBeyondTheLimit) {
   }
   TcpClient one_too_many(server->port());
   EXPECT_EQ(one_too_many.last_message_before_close(), "< error too many clients >");
+}
+
+TEST(SocketcandServer, SilentConnectionsCannotHoldTheSlots) {
+  // Every slot taken by a connection that never sends: each is closed when its handshake time is
+  // up, and a real master then gets in.
+  std::string error;
+  sim::SocketcandServer::Limits limits;
+  limits.handshake_ms = 300;
+  auto server = sim::SocketcandServer::open("main", sim::TcpEndpoint{"127.0.0.1", 0}, error, limits);
+  ASSERT_TRUE(server) << error;
+  std::vector<std::unique_ptr<TcpClient>> silent;
+  for (int i = 0; i < sim::SocketcandServer::kMaxClients; ++i) {
+    silent.push_back(std::make_unique<TcpClient>(server->port()));
+    EXPECT_EQ(silent.back()->next(), "< hi >");
+  }
+  EXPECT_TRUE(wait_for([&] { return server->client_count() == sim::SocketcandServer::kMaxClients; }));
+  TcpClient refused(server->port());
+  EXPECT_EQ(refused.last_message_before_close(), "< error too many clients >");
+  for (auto& c : silent)
+    EXPECT_EQ(c->last_message_before_close(), "< error no '? open main ?' within 300 ms of connecting >");
+  EXPECT_TRUE(wait_for([&] { return server->client_count() == 0; }));
+  TcpClient master(server->port());
+  master.handshake();
+  server->send(kHeartbeat);
+  server->service(sim::Time{});
+  EXPECT_EQ(master.next_frame(), kHeartbeat);
+  // A raw-mode client that only listens is not idle: it outlives the handshake limit.
+  std::this_thread::sleep_for(std::chrono::milliseconds(400));
+  server->send(kSdo);
+  server->service(sim::Time{});
+  EXPECT_EQ(master.next_frame(), kSdo);
+  EXPECT_EQ(server->client_count(), 1);
+}
+
+TEST(SocketcandServer, AClientIdleInBcmModeIsClosedAndOneThatTalksIsNot) {
+  std::string error;
+  sim::SocketcandServer::Limits limits;
+  limits.bcm_idle_ms = 300;
+  auto server = sim::SocketcandServer::open("main", sim::TcpEndpoint{"127.0.0.1", 0}, error, limits);
+  ASSERT_TRUE(server) << error;
+  TcpClient idle(server->port()), talking(server->port());
+  for (auto* c : {&idle, &talking}) {
+    EXPECT_EQ(c->next(), "< hi >");
+    c->send("< open main >");
+    EXPECT_EQ(c->next(), "< ok >");
+  }
+  for (int i = 0; i < 5; ++i) {  // 500 ms, an echo every 100 ms
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    talking.send("< echo >");
+    EXPECT_EQ(talking.next(), "< echo >");
+  }
+  EXPECT_EQ(idle.last_message_before_close(), "< error idle in BCM mode for 300 ms >");
+  EXPECT_EQ(server->client_count(), 1);
 }
 
 TEST(SocketcandClient, JoinsAServerAndExchangesFramesBothWays) {
