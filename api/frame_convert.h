@@ -1,11 +1,37 @@
 // Private to the library: the public vplant::Frame to and from the simulator's sim::CanFrame.
 #pragma once
 
+#include <vplant/error.h>
 #include <vplant/frame.h>
+
+#include <string>
 
 #include "sim/can_frame.h"
 
 namespace vplant::detail {
+
+inline std::string hex(std::uint32_t v) {
+  static constexpr char digits[] = "0123456789ABCDEF";
+  std::string s;
+  do {
+    s.insert(s.begin(), digits[v & 0xF]);
+    v >>= 4;
+  } while (v != 0);
+  return s;
+}
+
+/// Refuses a frame classic CAN cannot carry (a DLC of 9..15 is CAN FD's, an identifier beyond its
+/// format) rather than clamping it: the caller's master would send something else on a real bus.
+inline void check(const Frame& f, const char* call) {
+  std::string reason;
+  if (f.dlc > 8)
+    reason = std::string(call) + ": DLC " + std::to_string(f.dlc) + " is out of range: a classic CAN frame has DLC 0..8";
+  else if (!f.extended && f.id > sim::CanFrame::kMaxStdId)
+    reason = std::string(call) + ": identifier 0x" + hex(f.id) + " is out of range: an 11-bit identifier is 0x000..0x7FF (set extended for 29 bits)";
+  else if (f.id > sim::CanFrame::kMaxExtId)
+    reason = std::string(call) + ": identifier 0x" + hex(f.id) + " is out of range: a 29-bit identifier is 0x00000000..0x1FFFFFFF";
+  if (!reason.empty()) throw Error("", 0, 0, reason, reason);
+}
 
 inline sim::CanFrame to_sim(const Frame& f) {
   sim::CanFrame c;

@@ -11,6 +11,7 @@
 #include <map>
 
 #include "api/frame_convert.h"
+#include "devices/device.h"
 #include "engine/environment.h"
 #include "engine/fault_injector.h"
 #include "engine/node_group.h"
@@ -33,6 +34,31 @@ namespace {
 
 [[noreturn]] void fail(const std::string& reason) { throw Error("", 0, 0, reason, reason); }
 
+/// The plant's parameter names in one line, for an error about an unknown one.
+std::string list_parameters(const scenario::PlantModel& plant) {
+  std::string list;
+  for (const auto& n : plant.parameter_names()) list += (list.empty() ? "" : ", ") + n;
+  return list;
+}
+
+/// Marks the simulation as running for one run_for/run_until; a second run from inside it (a step
+/// function or frame handler calling run_for) would advance time in the middle of a tick.
+class RunGuard {
+ public:
+  RunGuard(bool& running, const char* call) : running_(running) {
+    if (running_)
+      fail(std::string(call) + ": called from a step function or frame handler while the simulation runs; "
+                               "run the simulation from the caller's code only");
+    running_ = true;
+  }
+  ~RunGuard() { running_ = false; }
+  RunGuard(const RunGuard&) = delete;
+  RunGuard& operator=(const RunGuard&) = delete;
+
+ private:
+  bool& running_;
+};
+
 /// Runs the caller's step functions in the order they were added (one scheduler component).
 class CallerSteps final : public sim::Steppable {
  public:
@@ -49,7 +75,10 @@ class CallerEndpoint final : public Endpoint, public sim::FrameReceiver {
  public:
   CallerEndpoint(sim::Bus& bus, const sim::Scheduler& clock, Simulation::FrameHandler handler)
       : bus_(bus), clock_(clock), handler_(std::move(handler)), id_(bus.attach(this)) {}
-  void send(const Frame& frame) override { bus_.send(id_, detail::to_sim(frame), clock_.now()); }
+  void send(const Frame& frame) override {
+    detail::check(frame, "Endpoint::send");
+    bus_.send(id_, detail::to_sim(frame), clock_.now());
+  }
   const std::string& bus() const override { return bus_.name(); }
   void on_frame(const sim::CanFrame& frame, sim::Time now) override {
     if (handler_) handler_(detail::from_sim(frame), now.time_since_epoch());
@@ -121,6 +150,7 @@ struct Simulation::Impl {
   std::vector<std::unique_ptr<LastFrames>> last_frames;  // per bus
   std::map<std::string, scenario::Signal, std::less<>> signals;
   std::deque<std::vector<scenario::Step>> injected;  // the FaultInjector refers to these specs
+  bool running = false;  // inside run_for/run_until (RunGuard)
 
   void build();
   void flush() {
@@ -210,12 +240,14 @@ Time Simulation::now() const { return impl_->scheduler->now().time_since_epoch()
 Duration Simulation::tick() const { return impl_->scheduler->tick(); }
 
 void Simulation::run_for(Duration d) {
+  const RunGuard guard(impl_->running, "run_for");
   auto& sched = *impl_->scheduler;
   if (d.count() > 0) sched.run_ticks(static_cast<std::uint64_t>((d.count() + sched.tick().count() - 1) / sched.tick().count()));
   impl_->flush();
 }
 
 bool Simulation::run_until(const std::function<bool()>& condition, Duration timeout) {
+  const RunGuard guard(impl_->running, "run_until");
   auto& sched = *impl_->scheduler;
   const auto end = sched.now() + timeout;
   bool held = condition();
@@ -247,14 +279,29 @@ double Simulation::parameter(const std::string& name) const {
   auto* plant = impl_->world->plant();
   if (!plant) fail("parameter '" + name + "': the scenario has no plant");
   const auto v = plant->parameter(name);
-  if (!v) fail("the plant has no parameter '" + name + "'");
+  if (!v) fail("the plant has no parameter '" + name + "'; it has: " + list_parameters(*plant));
   return *v;
+}
+
+std::vector<std::uint8_t> Simulation::object(const std::string& node, std::uint16_t index, std::uint8_t sub) const {
+  auto* n = impl_->world->find_node(node);
+  if (!n) fail("object: no node '" + node + "'");
+  const auto* entry = n->device->node().od().entry(index, sub);
+  if (!entry) {
+    char where[16];
+    std::snprintf(where, sizeof where, "%04Xh:%02X", index, sub);
+    fail("object: node '" + node + "' has no entry " + where);
+  }
+  return entry->value;
 }
 
 void Simulation::set_parameter(const std::string& name, double value) {
   auto* plant = impl_->world->plant();
   if (!plant) fail("parameter '" + name + "': the scenario has no plant");
-  if (auto error = plant->set_parameter(name, value); !error.empty()) fail(error);
+  if (auto error = plant->set_parameter(name, value); !error.empty()) {
+    if (!plant->parameter(name)) error += "; the plant's parameters are: " + list_parameters(*plant);
+    fail(error);
+  }
 }
 
 void Simulation::set_input(const std::string& node, const std::string& input, double value) {

@@ -182,6 +182,7 @@ class Reader {
   void apply_names(std::uint16_t index, const IniSection& s, unsigned count);
   void apply_values(std::uint16_t index, const IniSection& s, unsigned count);
   void check_default_in_limits(const OdEntry& e, int line);
+  std::string_view without_c_suffix(DataType type, std::string_view text, int line);
   void check_cob_ids();
   void check_mandatory();
   void add_dummy_objects();
@@ -393,11 +394,7 @@ void Reader::read_list_entries(ListKind kind) {
       diag_.error(k.line, "unexpected key '" + k.name + "' in [" + name + "]");
       continue;
     }
-    if (pos > *count) {
-      diag_.error(k.line, "entry " + k.name + " beyond SupportedObjects=" + std::to_string(*count));
-      continue;
-    }
-    positions.insert(pos);
+    positions.insert(pos);  // entries beyond SupportedObjects: a deviation, reported below
     const auto index = parse_count(k.value, 0xFFFF, reason);
     if (!index || *index == 0) {
       diag_.error(k.line, "entry " + k.name + ": " + (index ? "index 0x0000 is not an object" : reason));
@@ -419,8 +416,23 @@ void Reader::read_list_entries(ListKind kind) {
       diag_.warning(k.line, hex_index(idx) + " is a mandatory object: it belongs in [MandatoryObjects]");
     }
   }
-  // Entries 1..k present and SupportedObjects > k: the count is too high, nothing is out of place.
+  // Entries 1..k present and SupportedObjects < k: the count is too low (tools that count only
+  // the objects they generated); every entry listed is read.
   const std::uint64_t present = positions.size();
+  if (!positions.empty() && *positions.rbegin() > *count) {
+    const std::uint64_t highest = *positions.rbegin();
+    diag_.deviation(count_key->line,
+                    "SupportedObjects=" + std::to_string(*count) + " but [" + name + "] lists entries up to " +
+                        std::to_string(highest),
+                    "the entries listed are read, as if SupportedObjects=" + std::to_string(highest));
+    for (std::uint64_t p = 1; p <= highest; ++p) {
+      if (!positions.count(p))
+        diag_.error(count_key->line, "entry " + std::to_string(p) + " missing in [" + name + "] (entries up to " +
+                                         std::to_string(highest) + ")");
+    }
+    return;
+  }
+  // Entries 1..k present and SupportedObjects > k: the count is too high, nothing is out of place.
   if (present < *count && (present == 0 || *positions.rbegin() == present)) {
     diag_.deviation(count_key->line,
                     "SupportedObjects=" + std::to_string(*count) + " but [" + name + "] lists " + std::to_string(present) +
@@ -494,8 +506,14 @@ void Reader::cross_check() {
       continue;
     }
     if (!listed_.count(index)) {
-      diag_.error(secs.main->line, "[" + secs.main->name + "] is not listed in [MandatoryObjects], [OptionalObjects] or "
-                                   "[ManufacturerObjects]");
+      // Tools that add objects by hand and forget the lists; the object is complete, so it is read.
+      const bool mandatory = index == 0x1000 || index == 0x1001 || index == 0x1018;
+      const bool manufacturer = index >= 0x2000 && index <= 0x5FFF;
+      diag_.deviation(secs.main->line,
+                      "[" + secs.main->name + "] is not listed in [MandatoryObjects], [OptionalObjects] or "
+                      "[ManufacturerObjects]",
+                      std::string("read as if listed in ") +
+                          (mandatory ? "[MandatoryObjects]" : manufacturer ? "[ManufacturerObjects]" : "[OptionalObjects]"));
     }
   }
 }
@@ -559,7 +577,7 @@ bool Reader::build_entry(std::uint16_t index, std::uint8_t sub, const std::strin
     if (const auto* k = s.take(key)) {
       default_given = default_given || !k->value.empty();
       std::string reason;
-      auto v = parse_value(type, k->value, true, reason);
+      auto v = parse_value(type, without_c_suffix(type, k->value, k->line), true, reason);
       if (!v) {
         diag_.error(k->line, k->name + ": " + reason);
         ok = false;
@@ -581,7 +599,7 @@ bool Reader::build_entry(std::uint16_t index, std::uint8_t sub, const std::strin
       continue;
     }
     std::string reason;
-    auto v = parse_value(type, k->value, false, reason);
+    auto v = parse_value(type, without_c_suffix(type, k->value, k->line), false, reason);
     if (!v) {
       diag_.error(k->line, k->name + ": " + reason);
       ok = false;
@@ -626,6 +644,26 @@ bool Reader::build_entry(std::uint16_t index, std::uint8_t sub, const std::strin
   }
   check_default_in_limits(e, default_line);
   return true;
+}
+
+std::string_view Reader::without_c_suffix(DataType type, std::string_view text, int line) {
+  // C/C++ integer literal suffixes (U, L, UL, LL, ULL in any case and order) that code generators
+  // copy into EDS values: CiA 306 integers have none. Strict, the deviation is the one error.
+  if (!is_signed_integer(type) && !is_unsigned_integer(type)) return text;
+  std::size_t end = text.size();
+  while (end > 0 && (text[end - 1] == ' ' || text[end - 1] == '\t')) --end;
+  std::size_t start = end;
+  while (start > 0 && std::string_view("uUlL").find(text[start - 1]) != std::string_view::npos) --start;
+  const std::size_t length = end - start;
+  if (length == 0 || length > 3 || start == 0 || !std::isxdigit(static_cast<unsigned char>(text[start - 1]))) return text;
+  std::string suffix(text.substr(start, length));
+  for (char& c : suffix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  static constexpr std::string_view kSuffixes[] = {"U", "L", "UL", "LU", "LL", "ULL", "LLU"};
+  if (std::find(std::begin(kSuffixes), std::end(kSuffixes), suffix) == std::end(kSuffixes)) return text;
+  const std::string_view number = text.substr(0, start);
+  diag_.deviation(line, "C integer suffix '" + std::string(text.substr(start, length)) + "' in '" + std::string(text.substr(0, end)) + "'",
+                  "read as " + std::string(number));
+  return number;
 }
 
 void Reader::check_default_in_limits(const OdEntry& e, int line) {
@@ -894,7 +932,7 @@ void Reader::apply_values(std::uint16_t index, const IniSection& s, unsigned cou
     ++given;
     OdEntry* e = od_.entry(index, static_cast<std::uint8_t>(*sub));
     if (!e) continue;
-    auto v = parse_value(e->type, k.value, true, reason);
+    auto v = parse_value(e->type, without_c_suffix(e->type, k.value, k.line), true, reason);
     if (!v) {
       diag_.error(k.line, "value of sub-index " + k.name + ": " + reason);
       continue;
@@ -917,14 +955,21 @@ void Reader::check_mandatory() {
   if (!list || mandatory_list_broken_) return;  // already reported
   for (std::uint16_t index : {0x1000, 0x1001, 0x1018}) {
     if (listed_.count(index)) continue;
+    if (auto it = objects_.find(index); it != objects_.end() && it->second.main) continue;  // present, unlisted: cross_check
     const std::string reason = "mandatory object " + hex_index(index) + " missing (CiA 306: 0x1000, 0x1001, 0x1018)";
-    if (index != 0x1000 || objects_.count(index)) {
+    if (index == 0x1018 || objects_.count(index)) {
       diag_.error(list->line, reason);
       continue;
     }
-    // Every CiA 301 device has a device type; 0 is "no standardised device profile".
-    diag_.deviation(list->line, reason, "0x1000 is UNSIGNED32, ro, 0x00000000 (no device profile)");
-    if (!diag_.strict()) od_.add_var(0x1000, "Device type", DataType::Unsigned32, Access::ReadOnly, Bytes{0, 0, 0, 0});
+    if (index == 0x1000) {
+      // Every CiA 301 device has a device type; 0 is "no standardised device profile".
+      diag_.deviation(list->line, reason, "0x1000 is UNSIGNED32, ro, 0x00000000 (no device profile)");
+      if (!diag_.strict()) od_.add_var(0x1000, "Device type", DataType::Unsigned32, Access::ReadOnly, Bytes{0, 0, 0, 0});
+    } else {
+      // Every CiA 301 device has an error register; the node's EMCY service sets its bits.
+      diag_.deviation(list->line, reason, "0x1001 is UNSIGNED8, ro, 0 (the error register the node's EMCY service keeps)");
+      if (!diag_.strict()) od_.add_var(0x1001, "Error register", DataType::Unsigned8, Access::ReadOnly, Bytes{0});
+    }
   }
 }
 

@@ -23,7 +23,8 @@ struct Frame {
   bool rtr = false;        ///< remote transmission request
   std::array<std::uint8_t, 8> data{};
 
-  /// A data frame with up to 8 bytes (more are an error: std::invalid_argument).
+  /// A data frame with up to 8 bytes; an identifier above 7FFh makes it extended. More bytes or
+  /// an identifier above 1FFFFFFFh throw vplant::Error (<vplant/error.h>) naming the valid range.
   static Frame make(std::uint32_t id, std::initializer_list<std::uint8_t> bytes);
   friend bool operator==(const Frame&, const Frame&) = default;
 };

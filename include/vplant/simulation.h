@@ -4,6 +4,7 @@
 //   vplant::Endpoint& bus = sim.attach("main", [&](const vplant::Frame& f, vplant::Time t) { ... });
 //   sim.add_step([&](vplant::Time now, vplant::Duration tick) { bus.send(...); });
 //   sim.run_until([&] { return sim.signal("cyl.position") > 0.2; }, 5s);
+//   double bore = sim.parameter("cyl.bore_diameter");
 //
 // One tick (the scenario's clock.tick, default 1 ms): scenario faults, the scenario's scripted
 // master (Options::run_script), the caller's step functions in the order added, then the nodes and
@@ -45,7 +46,8 @@ class Endpoint {
  public:
   virtual ~Endpoint() = default;
   /// Queues a frame; it is delivered within the current tick (from a step or a frame handler),
-  /// or at the start of the next tick (between runs).
+  /// or at the start of the next tick (between runs). Throws Error for a frame classic CAN cannot
+  /// carry (DLC above 8, an identifier beyond 7FFh or, extended, 1FFFFFFFh).
   virtual void send(const Frame& frame) = 0;
   virtual const std::string& bus() const = 0;
 };
@@ -76,7 +78,8 @@ class Simulation {
 
   Time now() const;
   Duration tick() const;
-  /// Advances simulated time by `d` (rounded up to whole ticks).
+  /// Advances simulated time by `d` (rounded up to whole ticks). run_for and run_until are for the
+  /// caller's code: called from a step function or frame handler (inside a run) they throw Error.
   void run_for(Duration d);
   /// Runs tick by tick until `condition` holds (checked before each tick) or `timeout` of
   /// simulated time has passed; returns whether it held.
@@ -87,8 +90,13 @@ class Simulation {
   /// (`frame(0x285)[0:4] as i32 * 1e-4`, NaN before the first such frame), sums and scales of
   /// these. SI units. Throws Error for an unknown name or a malformed expression.
   double signal(const std::string& expression);
-  /// A run-time parameter of the plant, "component.parameter" (e.g. "cyl.bore"). Throws Error.
+  /// A run-time parameter of the plant, "component.parameter" (e.g. "cyl.bore_diameter"). Throws
+  /// Error for an unknown one, listing the plant's parameters.
   double parameter(const std::string& name) const;
+  /// The stored value of entry index:sub of node `node` (its scenario name), little-endian. No
+  /// SDO, no read hooks, no time passes: a value the device computes when read may be stale (read
+  /// it with test::SdoClient as a master would). Throws Error for an unknown node or entry.
+  std::vector<std::uint8_t> object(const std::string& node, std::uint16_t index, std::uint8_t sub) const;
   /// Changes a plant parameter between ticks (the plant's range checks apply). Throws Error.
   void set_parameter(const std::string& name, double value);
   /// Sets a node's input port or run-time quantity (Device::set_input, e.g. "hlt", "position").

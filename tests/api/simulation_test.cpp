@@ -232,3 +232,91 @@ TEST(Simulation, TheReferencePlantsScriptGivesTheTraceOfVplantRun) {
   EXPECT_GT(lib.size(), 100000u);
   EXPECT_TRUE(lib == cli) << "the library's trace differs from vplant run's";
 }
+
+TEST(Simulation, RunningFromAStepOrAFrameHandlerThrows) {
+  auto sim = vplant::Simulation::load_string(kSensor);
+  std::string from_step, from_handler;
+  sim.add_step([&](vplant::Time, vplant::Duration) {
+    if (!from_step.empty()) return;
+    try {
+      sim.run_for(1ms);
+      from_step = "(ran)";
+    } catch (const vplant::Error& e) {
+      from_step = e.what();
+    }
+  });
+  auto& bus = sim.attach("main", [&](const vplant::Frame&, vplant::Time) {
+    if (!from_handler.empty()) return;
+    try {
+      sim.run_until([] { return false; }, 1ms);
+      from_handler = "(ran)";
+    } catch (const vplant::Error& e) {
+      from_handler = e.what();
+    }
+  });
+  bus.send(vplant::Frame::make(0x605, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0}));
+  sim.run_for(3ms);
+  EXPECT_NE(from_step.find("run_for: called from a step function or frame handler"), std::string::npos) << from_step;
+  EXPECT_NE(from_handler.find("run_until: called from a step function or frame handler"), std::string::npos)
+      << from_handler;
+  EXPECT_EQ(sim.now(), 3ms);  // the nested calls advanced nothing
+  sim.run_for(1ms);           // and the simulation still runs from the caller's code
+  EXPECT_EQ(sim.now(), 4ms);
+}
+
+TEST(Simulation, FramesClassicCanCannotCarryAreRefusedWithTheRange) {
+  auto sim = vplant::Simulation::load_string(kSensor);
+  auto& bus = sim.attach("main", nullptr);
+  for (std::uint8_t dlc : {9, 12, 15, 200}) {
+    vplant::Frame f;
+    f.id = 0x605;
+    f.dlc = dlc;
+    try {
+      bus.send(f);
+      ADD_FAILURE() << "DLC " << int(dlc) << " was sent";
+    } catch (const vplant::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("DLC " + std::to_string(dlc) + " is out of range: a classic CAN frame has DLC 0..8"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+  vplant::Frame high;
+  high.id = 0x800;
+  EXPECT_THROW(bus.send(high), vplant::Error);  // 11-bit identifier above 7FFh
+  high.extended = true;
+  EXPECT_NO_THROW(bus.send(high));
+  high.id = 0x20000000;
+  EXPECT_THROW(bus.send(high), vplant::Error);
+
+  try {
+    vplant::Frame::make(0x605, {1, 2, 3, 4, 5, 6, 7, 8, 9});
+    ADD_FAILURE() << "nine bytes made a frame";
+  } catch (const vplant::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("9 data bytes are out of range: a classic CAN frame has 0..8"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(vplant::Frame::make(0x20000000, {}), vplant::Error);
+  EXPECT_TRUE(vplant::Frame::make(0x1FFFFFFF, {}).extended);
+}
+
+TEST(Simulation, AnUnknownPlantParameterListsTheValidNames) {
+  auto sim = vplant::Simulation::load_file(VPLANT_REFERENCE_PLANT);
+  // The header's example.
+  EXPECT_DOUBLE_EQ(sim.parameter("cyl.bore_diameter"), 0.063);
+  for (const std::string name : {"cyl.bore", "nothing.at_all"}) {
+    try {
+      (void)sim.parameter(name);
+      ADD_FAILURE() << name;
+    } catch (const vplant::Error& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("no parameter '" + name + "'"), std::string::npos) << what;
+      EXPECT_NE(what.find("cyl.bore_diameter, cyl.rod_diameter, cyl.stroke"), std::string::npos) << what;
+    }
+  }
+  try {
+    sim.set_parameter("cyl.bore", 0.05);
+    ADD_FAILURE() << "set cyl.bore";
+  } catch (const vplant::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("cyl.bore_diameter"), std::string::npos) << e.what();
+  }
+}

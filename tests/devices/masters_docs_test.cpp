@@ -68,3 +68,45 @@ TEST(MastersDocs, SummaryTableMatchesTheProducts) {
     }
   }
 }
+
+namespace {
+
+std::uint32_t hex_cell(const std::string& c) { return static_cast<std::uint32_t>(std::stoul(c.substr(0, c.size() - 1), nullptr, 16)); }
+
+}  // namespace
+
+TEST(MastersDocs, IdentityTableMatchesTheProducts) {
+  // 1000h and 1018h as the "Identity objects" table gives them ("absent" = the sub-index does not
+  // exist), and the abort of an SDO write to 1000h that the text under it names.
+  std::ifstream file(std::string(VPLANT_SOURCE_DIR) + "/docs/masters.md");
+  ASSERT_TRUE(file) << "docs/masters.md missing";
+  std::stringstream text;
+  text << file.rdbuf();
+  const std::string doc = text.str();
+  for (const char* name : {"md2", "dsv", "vtvpcd", "hlt1100", "wdga"}) {
+    SCOPED_TRACE(name);
+    const std::string row = row_of(doc, std::string("`") + name + "`");
+    ASSERT_FALSE(row.empty());
+    std::string error;
+    auto device = devices::find_product(name)->make(devices::DeviceOptions{}, error);
+    ASSERT_NE(device, nullptr) << error;
+    device->power_on(sim::Time{});
+    auto& od = device->node().od();
+    ASSERT_NE(od.entry(0x1000, 0), nullptr);
+    EXPECT_EQ(canopen::decode_unsigned(od.entry(0x1000, 0)->value), hex_cell(cell(row, 1)));
+    EXPECT_EQ(canopen::decode_unsigned(od.entry(0x1018, 0)->value), std::stoul(cell(row, 2)));
+    for (int sub = 1; sub <= 4; ++sub) {
+      const std::string c = cell(row, 2 + sub);
+      const canopen::OdEntry* e = od.entry(0x1018, static_cast<std::uint8_t>(sub));
+      if (c == "absent") {
+        EXPECT_EQ(e, nullptr) << "1018h:" << sub;
+      } else {
+        ASSERT_NE(e, nullptr) << "1018h:" << sub;
+        EXPECT_EQ(canopen::decode_unsigned(e->value), hex_cell(c)) << "1018h:" << sub;
+      }
+    }
+    const std::uint8_t zero[4] = {0, 0, 0, 0};
+    const auto abort = od.write(0x1000, 0, zero, canopen::Origin::Sdo);
+    EXPECT_EQ(canopen::code(abort), std::string(name) == "wdga" ? 0x06010002u : 0x06010000u);
+  }
+}

@@ -664,8 +664,13 @@ TEST(EdsErrors, ObjectListEntriesAndCount) {
                "SupportedObjects=2 but [ManufacturerObjects] lists 1 entry");  // strict; a warning otherwise
   expect_error(with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "SupportedObjects=2\n2=0x2000\n"), "SupportedObjects=2",
                "entry 1 missing in [ManufacturerObjects] (SupportedObjects=2)");  // a gap is always an error
-  expect_error(with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "SupportedObjects=1\n1=0x2000\n3=0x2001\n"), "3=0x2001",
-               "entry 3 beyond SupportedObjects=1");
+  // Entries beyond the count: strict, the deviation; tolerant, a gap below them is still an error.
+  const auto beyond = with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "SupportedObjects=1\n1=0x2000\n3=0x2001\n");
+  expect_error(beyond, "SupportedObjects=1",
+               "SupportedObjects=1 but [ManufacturerObjects] lists entries up to 3");
+  EdsError gap;
+  EXPECT_FALSE(canopen::parse_eds(beyond, "bad.eds", gap));
+  EXPECT_EQ(gap.reason, "entry 2 missing in [ManufacturerObjects] (entries up to 3)");
   expect_error(with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "1=0x2000\n"), "[ManufacturerObjects]",
                "missing SupportedObjects in [ManufacturerObjects]");
   expect_error(with(kMinimal, "SupportedObjects=1\n1=0x2000\n", "SupportedObjects=1\n1=0x2000\nfirst=0x2000\n"), "first=0x2000",
@@ -991,6 +996,15 @@ const Quirk kQuirks[] = {
     {"quirk_record_no_sub0.eds", "[1018]", "missing [1018sub0] (highest sub-index supported)",
      "sub 0 is UNSIGNED8, ro, 1 (the highest sub-index given)"},
     {"quirk_wo_low_limit.eds", "[2000]", "no DefaultValue, and 0 is below LowLimit 1", "the entry starts at LowLimit 1"},
+    {"quirk_c_suffix.eds", "DefaultValue=0x1234567890ABCDEFLL",
+     "C integer suffix 'LL' in '0x1234567890ABCDEFLL'", "read as 0x1234567890ABCDEF"},
+    {"quirk_unlisted_object.eds", "[2001]",
+     "[2001] is not listed in [MandatoryObjects], [OptionalObjects] or [ManufacturerObjects]",
+     "read as if listed in [ManufacturerObjects]"},
+    {"quirk_no_1001.eds", "[MandatoryObjects]", "mandatory object 0x1001 missing (CiA 306: 0x1000, 0x1001, 0x1018)",
+     "0x1001 is UNSIGNED8, ro, 0 (the error register the node's EMCY service keeps)"},
+    {"quirk_list_beyond_count.eds", "SupportedObjects=2", "SupportedObjects=2 but [OptionalObjects] lists entries up to 3",
+     "the entries listed are read, as if SupportedObjects=3"},
 };
 
 }  // namespace
@@ -1052,6 +1066,47 @@ TEST(EdsQuirks, TheInterpretationsAreTheDocumentedOnes) {
   const auto subnumber = canopen::load_eds(kDataDir + "quirk_subnumber.eds", error);
   ASSERT_TRUE(subnumber) << error.message();
   EXPECT_EQ(subnumber->object(0x1400)->entries.size(), 3u);
+
+  const auto suffix = canopen::load_eds(kDataDir + "quirk_c_suffix.eds", error);
+  ASSERT_TRUE(suffix) << error.message();
+  EXPECT_EQ(suffix->get<std::uint64_t>(0x2001, 0), 0x1234567890ABCDEFull);
+
+  const auto unlisted = canopen::load_eds(kDataDir + "quirk_unlisted_object.eds", error);
+  ASSERT_TRUE(unlisted) << error.message();
+  EXPECT_EQ(unlisted->get<std::uint8_t>(0x2001, 0), 20);
+  EXPECT_EQ(unlisted->entry(0x2001, 0)->access, Access::ReadWrite);
+
+  const auto no_1001 = canopen::load_eds(kDataDir + "quirk_no_1001.eds", error);
+  ASSERT_TRUE(no_1001) << error.message();
+  ASSERT_NE(no_1001->entry(0x1001, 0), nullptr);
+  EXPECT_EQ(no_1001->entry(0x1001, 0)->type, DataType::Unsigned8);
+  EXPECT_EQ(no_1001->entry(0x1001, 0)->access, Access::ReadOnly);
+  EXPECT_EQ(no_1001->get<std::uint8_t>(0x1001, 0), 0);
+
+  const auto beyond = canopen::load_eds(kDataDir + "quirk_list_beyond_count.eds", error);
+  ASSERT_TRUE(beyond) << error.message();
+  EXPECT_NE(beyond->object(0x1600), nullptr);  // the third entry, beyond SupportedObjects=2
+  EXPECT_EQ(beyond->get<std::uint32_t>(0x1600, 1), 0x20000010u);
+}
+
+TEST(EdsQuirks, ACSuffixIsOnlyTakenOffAnInteger) {
+  const std::string base = read_file(kDataDir + "quirk_none.eds");
+  // Every C spelling is read with the one warning; text that is no suffix stays an error.
+  for (const char* suffix : {"u", "UL", "lu", "ull", "LLU"}) {
+    SCOPED_TRACE(suffix);
+    EdsError error;
+    std::vector<EdsError> warnings;
+    const auto od = canopen::parse_eds(with(base, "HighLimit=100", std::string("HighLimit=100") + suffix), "s.eds", error,
+                                       nullptr, &warnings);
+    ASSERT_TRUE(od) << error.message();
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(od->entry(0x2000, 0)->high_limit, ObjectDictionary::encode(DataType::Unsigned16, 100));
+  }
+  for (const char* bad : {"HighLimit=100LLL", "HighLimit=100UU", "HighLimit=LL"}) {
+    SCOPED_TRACE(bad);
+    EdsError error;
+    EXPECT_FALSE(canopen::parse_eds(with(base, "HighLimit=100", bad), "s.eds", error));
+  }
 }
 
 TEST(EdsErrors, CobIdAbove7FFWithoutThe29BitFlagMatchesNoFrame) {
