@@ -130,42 +130,6 @@ const Verdicts& Runner::verdicts() const { return impl_->verdicts; }
 const RunSummary& Runner::summary() const { return impl_->summary; }
 Runner* active_runner() { return g_active.load(); }
 
-namespace {
-
-/// One case of a file (the whole file when it has no matrix).
-int run_case(const ScenarioCases& cases, std::size_t i, bool several, const Environment& env, const RunOptions& options,
-             bool& interrupted) {
-  try {
-    Scenario s = cases.load(i);
-    if (options.no_script) {
-      // The file's script and duration belong to its scripted master; without it, the run lasts
-      // until --duration or, in real time, until SIGINT/SIGTERM.
-      s.script.clear();
-      s.clock.duration.reset();
-      // The file's outputs describe its scripted run; a session for an external master writes
-      // only what the command line asks for (--trace, --csv, --junit).
-      s.outputs.trace.clear();
-      s.outputs.csv.reset();
-      s.outputs.plots.clear();
-      s.outputs.junit.clear();
-    }
-    RunOptions o = options;
-    // Several cases of a sweep write the files the command line names side by side.
-    if (several)
-      for (std::string* path : {&o.trace, &o.csv, &o.junit}) *path = cases.output_path(*path, i);
-    if (o.extension_for && !o.extension) o.extension = o.extension_for(s);
-    Runner runner(s, env, o);
-    const int rc = runner.run();
-    interrupted = runner.summary().interrupted;
-    return rc;
-  } catch (const LoadError& e) {
-    std::fprintf(options.out, "%s\n", e.what());
-    return 2;
-  }
-}
-
-}  // namespace
-
 int Runner::run() {
   auto& m = *impl_;
   g_active.store(this);
@@ -298,6 +262,42 @@ int Runner::run() {
   }
   return rc;
 }
+
+namespace {
+
+/// One case of a file (the whole file when it has no matrix).
+int run_case(const ScenarioCases& cases, std::size_t i, bool several, const Environment& env, const RunOptions& options,
+             bool& interrupted) {
+  try {
+    Scenario s = cases.load(i);
+    if (options.no_script) {
+      // The file's script and duration belong to its scripted master; without it, the run lasts
+      // until --duration or, in real time, until SIGINT/SIGTERM.
+      s.script.clear();
+      s.clock.duration.reset();
+      // The file's outputs describe its scripted run; a session for an external master writes
+      // only what the command line asks for (--trace, --csv, --junit).
+      s.outputs.trace.clear();
+      s.outputs.csv.reset();
+      s.outputs.plots.clear();
+      s.outputs.junit.clear();
+    }
+    RunOptions o = options;
+    // Several cases of a sweep write the files the command line names side by side.
+    if (several)
+      for (std::string* path : {&o.trace, &o.csv, &o.junit}) *path = cases.output_path(*path, i);
+    if (o.extension_for && !o.extension) o.extension = o.extension_for(s);
+    Runner runner(s, env, o);
+    const int rc = runner.run();
+    interrupted = runner.summary().interrupted;
+    return rc;
+  } catch (const LoadError& e) {
+    std::fprintf(options.out, "%s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace
 
 int run_scenario_file(const std::string& path, const Environment& env, const RunOptions& options) {
   try {
