@@ -154,6 +154,9 @@ int run_tests(const TestArgs& a) {
     return kExitBadInput;
   }
   const fs::path tmp = tmp_template;
+  // Case i writes its JUnit to tmp/i.xml and its output to tmp/i.out.
+  auto junit_of = [&tmp](std::size_t i) { return (tmp / (std::to_string(i) + ".xml")).string(); };
+  auto output_of = [&tmp](std::size_t i) { return (tmp / (std::to_string(i) + ".out")).string(); };
   const std::string program = this_program();
   std::vector<PoolJob> jobs;
   std::vector<std::size_t> job_case;  // the case of each job (cases that failed to load run no job)
@@ -165,10 +168,10 @@ int run_tests(const TestArgs& a) {
       continue;
     }
     PoolJob job;
-    job.argv = {program, "run", c.file, "--case", c.name, "--junit", (tmp / (std::to_string(i) + ".xml")).string()};
+    job.argv = {program, "run", c.file, "--case", c.name, "--junit", junit_of(i)};
     if (a.seed >= 0) job.argv.insert(job.argv.end(), {"--seed", std::to_string(a.seed)});
     if (!a.report.empty()) job.argv.insert(job.argv.end(), {"--report", a.report, "--report-no-index"});
-    job.output = (tmp / (std::to_string(i) + ".out")).string();
+    job.output = output_of(i);
     jobs.push_back(std::move(job));
     job_case.push_back(i);
   }
@@ -182,7 +185,7 @@ int run_tests(const TestArgs& a) {
     std::printf("[%zu/%zu] %-7s %s (%.2f s)%s%s\n", ++finished, cases.size(), kind_text(o.kind), cases[i].name.c_str(),
                 o.wall_s, o.detail.empty() ? "" : ": ", o.detail.c_str());
     if (o.kind != Outcome::Kind::Pass) {
-      const std::string text = cases[i].error.empty() ? read_text((tmp / (std::to_string(i) + ".out")).string(), kShownOutput)
+      const std::string text = cases[i].error.empty() ? read_text(output_of(i), kShownOutput)
                                                       : cases[i].error + "\n";
       std::string indented;
       std::size_t start = 0;
@@ -207,7 +210,7 @@ int run_tests(const TestArgs& a) {
     const std::size_t i = job_case[job];
     auto& o = outcomes[i];
     o.wall_s = r.wall_s;
-    o.simulated_s = simulated_seconds(read_text((tmp / (std::to_string(i) + ".xml")).string(), 1 << 20));
+    o.simulated_s = simulated_seconds(read_text(junit_of(i), kJunitLimit));
     switch (r.end) {
       case PoolResult::End::Exited:
         o.kind = r.code == kExitOk ? Outcome::Kind::Pass
@@ -263,7 +266,7 @@ int run_tests(const TestArgs& a) {
       // A case that ran to its end wrote its own suite; one that crashed, hung or did not load
       // gets a suite with the reason and its output.
       const bool ran = o.kind == Outcome::Kind::Pass || o.kind == Outcome::Kind::Fail;
-      const auto own = ran ? scenario::junit_testsuites(read_text((tmp / (std::to_string(i) + ".xml")).string(), kJunitLimit))
+      const auto own = ran ? scenario::junit_testsuites(read_text(junit_of(i), kJunitLimit))
                            : std::vector<std::string>();
       if (!own.empty()) {
         suites.insert(suites.end(), own.begin(), own.end());
@@ -271,7 +274,7 @@ int run_tests(const TestArgs& a) {
       }
       const std::string message = std::string(kind_text(o.kind)) + (o.detail.empty() ? "" : ": " + o.detail);
       const std::string output =
-          cases[i].error.empty() ? read_text((tmp / (std::to_string(i) + ".out")).string(), kShownOutput) : cases[i].error;
+          cases[i].error.empty() ? read_text(output_of(i), kShownOutput) : cases[i].error;
       suites.push_back(scenario::junit_error_suite(cases[i].name, message, output, o.wall_s));
     }
     std::error_code ec;
