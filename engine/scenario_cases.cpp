@@ -71,8 +71,9 @@ void write_at(YAML::Node root, const std::string& key, YAML::Node key_node, cons
       const YAML::Node& lookup = parent;  // const: looking up does not add the key
       if (parent.IsMap()) {
         if (const YAML::Node found = lookup[parts[i]]) next.reset(found);  // a missing key is an invalid node
+      } else if (parent.IsSequence()) {
+        next.reset(named_item(parent, parts[i]));
       }
-      else if (parent.IsSequence()) next.reset(named_item(parent, parts[i]));
       if (!next) fail(parent.IsSequence() ? "no item named '" + parts[i] + "' in the list" : "the scenario has no '" + where + "'");
       if (!next.IsMap() && !next.IsSequence()) fail("'" + where + "' is a single value, not a mapping or a list");
       parent.reset(next);

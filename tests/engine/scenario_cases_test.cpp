@@ -82,6 +82,26 @@ TEST(ScenarioCases, AKeyTheFileDoesNotHaveYetIsAdded) {
   EXPECT_EQ(c.load(1).clock.tick, sim::milliseconds(2));
 }
 
+TEST(ScenarioCases, APlantDescribedInFullHasItsComponentsParametersVaried) {
+  const auto c = ScenarioCases::parse(R"(name: own
+plant:
+  components:
+    - {type: tank, name: tank, parameters: {pressure: 0}}
+    - {type: tank, name: sump}
+clock: {duration: 1s}
+matrix:
+  plant.tank.pressure: [0, 1e5]
+  plant.sump.pressure: [2e5]
+)",
+                                      "m.yaml", ".");
+  ASSERT_EQ(c.size(), 2u);
+  const auto s = c.load(1);
+  EXPECT_DOUBLE_EQ(s.plant["components"][0]["parameters"]["pressure"].as<double>(), 1e5);
+  EXPECT_DOUBLE_EQ(s.plant["components"][1]["parameters"]["pressure"].as<double>(), 2e5);
+  EXPECT_EQ(error_of("plant: {components: [{type: tank, name: tank}]}\nmatrix: {plant.pump.alpha: [1]}\n"),
+            "m.yaml:2:10: matrix: 'plant.pump.alpha': the plant has no component named 'pump'");
+}
+
 TEST(ScenarioCases, BadMatricesAreRejectedAtTheirLineAndColumn) {
   const std::string base = kBase;
   // line 10 is `matrix:`; its keys are on line 11, column 3
