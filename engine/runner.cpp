@@ -1,5 +1,6 @@
 #include "engine/runner.h"
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 #include <filesystem>
@@ -12,7 +13,7 @@
 #include "engine/node_group.h"
 #include "engine/plot.h"
 #include "engine/recorder.h"
-#include "engine/scenario_loader.h"
+#include "engine/scenario_cases.h"
 #include "engine/scripted_master.h"
 #include "engine/speed_text.h"
 #include "engine/tick_assembly.h"
@@ -256,9 +257,13 @@ int Runner::run() {
   return rc;
 }
 
-int run_scenario_file(const std::string& path, const Environment& env, const RunOptions& options) {
+namespace {
+
+/// One case of a file (the whole file when it has no matrix).
+int run_case(const ScenarioCases& cases, std::size_t i, bool several, const Environment& env, const RunOptions& options,
+             bool& interrupted) {
   try {
-    Scenario s = load_scenario_file(path);
+    Scenario s = cases.load(i);
     if (options.no_script) {
       // The file's script and duration belong to its scripted master; without it, the run lasts
       // until --duration or, in real time, until SIGINT/SIGTERM.
@@ -272,9 +277,39 @@ int run_scenario_file(const std::string& path, const Environment& env, const Run
       s.outputs.junit.clear();
     }
     RunOptions o = options;
+    // Several cases of a sweep write the files the command line names side by side.
+    if (several)
+      for (std::string* path : {&o.trace, &o.csv, &o.junit}) *path = cases.output_path(*path, i);
     if (o.extension_for && !o.extension) o.extension = o.extension_for(s);
     Runner runner(s, env, o);
-    return runner.run();
+    const int rc = runner.run();
+    interrupted = runner.summary().interrupted;
+    return rc;
+  } catch (const LoadError& e) {
+    std::fprintf(options.out, "%s\n", e.what());
+    return 2;
+  }
+}
+
+}  // namespace
+
+int run_scenario_file(const std::string& path, const Environment& env, const RunOptions& options) {
+  try {
+    const ScenarioCases cases = ScenarioCases::load_file(path);
+    std::vector<std::size_t> selected;
+    if (!options.case_name.empty()) {
+      const auto i = cases.find(options.case_name);
+      if (!i) throw LoadError(SourceMark{path, 0, 0}, "no case named '" + options.case_name + "'");
+      selected.push_back(*i);
+    } else {
+      for (std::size_t i = 0; i < cases.size(); ++i) selected.push_back(i);
+    }
+    // Every case of a sweep runs; the worst exit code is the run's (2 over 1 over 0).
+    int worst = 0;
+    bool interrupted = false;
+    for (std::size_t k = 0; k < selected.size() && !interrupted; ++k)
+      worst = std::max(worst, run_case(cases, selected[k], selected.size() > 1, env, options, interrupted));
+    return worst;
   } catch (const LoadError& e) {
     std::fprintf(options.out, "%s\n", e.what());
     return 2;

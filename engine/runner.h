@@ -38,6 +38,8 @@ struct RunOptions {
   bool quiet = false;                      ///< no summary (tests, benchmarks)
   bool strict_eds = false;                 ///< --strict: EDS nodes reject CiA 306 deviations
   std::FILE* out = stderr;                 ///< summary, failures, log lines
+  /// run_scenario_file: only this case of the file's matrix (`vplant run --case`); "" = all.
+  std::string case_name;
   /// Watches and steers the run between ticks (the live control plane); may keep a run going
   /// past its duration. Not owned.
   RunExtension* extension = nullptr;
@@ -89,8 +91,9 @@ class Runner {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Loads and runs a scenario file: the whole of `vplant run` after option parsing. Prints errors
-/// as `file:line:col: reason`; returns 0, 1 or 2.
+/// Loads and runs a scenario file, each case of its matrix in turn (scenario_cases.h): the whole
+/// of `vplant run` after option parsing. Prints errors as `file:line:col: reason`; returns 0, 1
+/// or 2 (the worst of the cases).
 int run_scenario_file(const std::string& path, const Environment& env, const RunOptions& options);
 
 /// The runner currently executing (for a SIGINT handler), or nullptr.

@@ -266,16 +266,22 @@ OutputSpec read_outputs(const YAML::Node& node, const std::string& file) {
 
 }  // namespace
 
-Scenario parse_scenario(const std::string& text, const std::string& file, const std::string& dir) {
-  YAML::Node root;
+YAML::Node parse_scenario_yaml(const std::string& text, const std::string& file) {
   try {
-    root = YAML::Load(text);
+    return YAML::Load(text);
   } catch (const YAML::DeepRecursion& e) {
     throw LoadError(SourceMark{file, e.mark.line + 1, e.mark.column + 1},
                     "nesting deeper than " + std::to_string(e.depth() - 1) + " levels (the YAML parser's limit)");
   } catch (const YAML::ParserException& e) {
     throw LoadError(SourceMark{file, e.mark.line + 1, e.mark.column + 1}, "YAML syntax error: " + e.msg);
   }
+}
+
+Scenario parse_scenario(const std::string& text, const std::string& file, const std::string& dir) {
+  return parse_scenario_node(parse_scenario_yaml(text, file), file, dir);
+}
+
+Scenario parse_scenario_node(const YAML::Node& root, const std::string& file, const std::string& dir) {
   Scenario s;
   s.file = file;
   s.dir = dir;
@@ -307,6 +313,7 @@ Scenario parse_scenario(const std::string& text, const std::string& file, const 
   if (auto sc = r.get("script")) s.script = read_script(sc, file);
   if (auto f = r.get("faults")) s.faults = read_faults(f, file);
   if (auto u = r.get("ui")) s.ui = read_ui(u, file);
+  r.get("matrix");  // the sweep: expanded before this by ScenarioCases (scenario_cases.h)
   r.finish();
   if (s.name.empty()) {
     const auto slash = file.rfind('/');
@@ -316,7 +323,7 @@ Scenario parse_scenario(const std::string& text, const std::string& file, const 
   return s;
 }
 
-Scenario load_scenario_file(const std::string& path) {
+std::string read_scenario_file(const std::string& path, std::string& dir) {
   std::string text, reason;
   switch (sim::read_input_file(path, text, reason)) {
     case sim::ReadStatus::Ok: break;
@@ -324,7 +331,13 @@ Scenario load_scenario_file(const std::string& path) {
     case sim::ReadStatus::Failed: throw LoadError(SourceMark{path, 0, 0}, reason);
   }
   const auto slash = path.rfind('/');
-  const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
+  dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
+  return text;
+}
+
+Scenario load_scenario_file(const std::string& path) {
+  std::string dir;
+  const std::string text = read_scenario_file(path, dir);
   return parse_scenario(text, path, dir);
 }
 

@@ -15,5 +15,6 @@ Runner add_eds_command(CLI::App& app);
 Runner add_devices_command(CLI::App& app);
 Runner add_run_command(CLI::App& app);
 Runner add_dcf_command(CLI::App& app);
+Runner add_test_command(CLI::App& app);
 
 }  // namespace vplant

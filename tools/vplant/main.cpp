@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   add("devices", "list the emulated products", vplant::add_devices_command);
   add("run", "run a scenario: the whole plant, a scripted master, faults and checks", vplant::add_run_command);
   add("dcf", "write the DCF of a scenario's node: its configured values and node-ID", vplant::add_dcf_command);
+  add("test", "run a suite of scenarios: folders, -j in parallel, shards, one JUnit, a report", vplant::add_test_command);
 
   try {
     app.parse(argc, argv);

@@ -33,6 +33,7 @@ struct RunArgs {
   bool ui_run = false;
   double ui_speed = -1;
   bool strict = false;
+  std::string case_name;
 };
 
 bool stop_active_run() {
@@ -68,6 +69,7 @@ int run(const RunArgs& a) {
   o.junit = a.junit;
   o.quiet = a.quiet;
   o.strict_eds = a.strict;
+  o.case_name = a.case_name;
   o.progress = !a.quiet && ::isatty(STDERR_FILENO);
   // The control plane: --ui overrides the scenario's `ui:`; made once the scenario is loaded.
   std::unique_ptr<control::ControlPlane> ui;
@@ -119,6 +121,8 @@ Runner add_run_command(CLI::App& app) {
         return std::stod(v) == 0 || std::stod(v) >= 0.001 ? std::string() : std::string("0 or 0.001..1000");
       });
   app.add_flag("--strict", a->strict, "EDS nodes: reject the CiA 306 deviations that are otherwise loaded with a warning");
+  // `vplant test` runs each case of a sweep as its own process (docs/scenarios.md, "matrix").
+  app.add_option("--case", a->case_name, "run only this case of the file's matrix")->group("");
   return [a] { return run(*a); };
 }
 
