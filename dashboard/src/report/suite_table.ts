@@ -30,11 +30,12 @@ function value(c: CaseSummary, key: SortKey): number | string {
   }
 }
 
-function compare(a: number | string, b: number | string): number {
-  if (typeof a === 'string' || typeof b === 'string') return String(a).localeCompare(String(b));
-  if (Number.isNaN(a)) return Number.isNaN(b) ? 0 : 1;  // unknown values last
-  if (Number.isNaN(b)) return -1;
-  return a - b;
+function compare(a: number | string, b: number | string, descending: boolean): number {
+  if (typeof a === 'number' && typeof b === 'number' && (Number.isNaN(a) || Number.isNaN(b))) {
+    return Number.isNaN(a) ? (Number.isNaN(b) ? 0 : 1) : -1;  // unknown values last either way
+  }
+  const order = typeof a === 'string' || typeof b === 'string' ? String(a).localeCompare(String(b)) : a - b;
+  return descending ? -order : order;
 }
 
 export function suiteRows(cases: readonly CaseSummary[], view: SuiteView): CaseSummary[] {
@@ -43,8 +44,8 @@ export function suiteRows(cases: readonly CaseSummary[], view: SuiteView): CaseS
     (view.result === 'all' || c.result === view.result) &&
     (!text || c.name.toLowerCase().includes(text) || (c.file ?? '').toLowerCase().includes(text)));
   return shown.sort((a, b) => {
-    const primary = compare(value(a, view.sort), value(b, view.sort));
-    if (primary !== 0) return view.descending ? -primary : primary;
+    const primary = compare(value(a, view.sort), value(b, view.sort), view.descending);
+    if (primary !== 0) return primary;
     return a.name.localeCompare(b.name);  // ties (e.g. every case passed) in name order
   });
 }
