@@ -1,6 +1,6 @@
 # CPack: `cpack -G DEB` in the build tree makes vplant_<version>_<arch>.deb from the install rules
 # (cmake/Install.cmake), under /usr. Depends: the Debian runtime packages of the CLI's shared
-# libraries, computed by dpkg-shlibdeps (libyaml-cpp0.7, libode8, libpng16-16, libfmt9, ...).
+# libraries, computed by dpkg-shlibdeps (libyaml-cpp0.7, libode8, libfmt9, ...).
 # Recommends: the -dev packages find_package(vplant) needs to link the static libraries.
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME vplant)
@@ -14,7 +14,7 @@ set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_COMPRESSION_TYPE gzip)  # fast; xz saves little on stripped objects
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS
-    "libyaml-cpp-dev, libfmt-dev, libeigen3-dev, libode-dev, libpng-dev, pkg-config, cmake, g++")
+    "libyaml-cpp-dev, libfmt-dev, libeigen3-dev, libode-dev, nlohmann-json3-dev, pkg-config, cmake, g++")
 find_program(VPLANT_DPKG dpkg)
 if(VPLANT_DPKG)
   execute_process(COMMAND ${VPLANT_DPKG} --print-architecture OUTPUT_VARIABLE vplant_deb_arch OUTPUT_STRIP_TRAILING_WHITESPACE)

@@ -1,5 +1,6 @@
 // Builds the dashboard with esbuild (no network, no dev server):
-//   node build.mjs --outdir DIR          the page: DIR/index.html, DIR/assets/app.js, DIR/assets/app.css
+//   node build.mjs --outdir DIR          the page: DIR/index.html, DIR/assets/app.js, DIR/assets/app.css,
+//                                        and the HTML report's code: DIR/report/report.js, DIR/report/report.css
 //   node build.mjs --tests-outdir DIR    the unit tests (tests/dashboard/*.test.ts) as ES modules for `node --test`
 //   node build.mjs --e2e-outdir DIR      the browser test (tests/dashboard/*.e2e.ts) as CommonJS, playwright-core external
 import { build } from 'esbuild';
@@ -29,6 +30,19 @@ async function buildPage(outdir) {
     logLevel: 'warning',
   });
   await copyFile(join(here, 'index.html'), join(outdir, 'index.html'));
+  // The report (engine/report/): vplant writes these two files into the report folder.
+  await build({
+    absWorkingDir: here,
+    entryPoints: { report: 'src/report/main.ts' },
+    outdir: join(outdir, 'report'),
+    bundle: true,
+    minify: true,
+    sourcemap: false,
+    format: 'iife',
+    target: ['chrome100', 'firefox100', 'safari15'],
+    legalComments: 'none',
+    logLevel: 'warning',
+  });
 }
 
 async function entries(folder, suffix) {

@@ -11,9 +11,11 @@
 #include "engine/fault_injector.h"
 #include "engine/junit_writer.h"
 #include "engine/node_group.h"
-#include "engine/plot.h"
 #include "engine/recorder.h"
 #include "engine/scenario_cases.h"
+#include "engine/report/case_collector.h"
+#include "engine/report/report_writer.h"
+#include "engine/scenario_loader.h"
 #include "engine/scripted_master.h"
 #include "engine/speed_text.h"
 #include "engine/tick_assembly.h"
@@ -53,12 +55,13 @@ struct Runner::Impl {
   std::unique_ptr<sim::Scheduler> scheduler;
   std::optional<sim::Duration> duration;
   std::string csv_path, trace_path, junit_path;
-  std::vector<std::pair<const PlotSpec*, std::vector<int>>> plots;  // plot → recorder columns
+  std::unique_ptr<report::CaseCollector> report;  // --report DIR
 
   Impl(const Scenario& s, const RunOptions& o) : scenario(s), options(o) {}
 
   void log(sim::Time t, const std::string& text) const {
     if (!options.quiet) std::fprintf(options.out, "[%10.3f s] %s\n", sim::seconds(t), text.c_str());
+    if (report) report->event(t, text);
   }
 };
 
@@ -91,11 +94,7 @@ Runner::Runner(const Scenario& scenario, const Environment& env, const RunOption
                                                                                         : m.world->wired_signals();
     for (const auto& s : signals) m.recorder->add(m.world->resolve(s), false, true);
   }
-  for (const auto& p : scenario.outputs.plots) {
-    std::vector<int> columns;
-    for (const auto& s : p.signals) columns.push_back(m.recorder->add(m.world->resolve(s), true, false));
-    m.plots.emplace_back(&p, std::move(columns));
-  }
+  if (!options.report_dir.empty()) m.report = std::make_unique<report::CaseCollector>(scenario, *m.world, *m.recorder);
 
   m.scheduler = std::make_unique<sim::Scheduler>(scenario.clock.tick, realtime ? sim::ClockMode::RealTime : sim::ClockMode::Virtual);
   assemble_tick(*m.scheduler, TickParts{*m.world, *m.faults, *m.master, *m.nodes, nullptr, m.recorder.get()});
@@ -184,27 +183,6 @@ int Runner::run() {
     std::fprintf(m.options.out, "vplant run: %s\n", error.c_str());
     rc = 2;
   }
-  for (const auto& [spec, columns] : m.plots) {
-    PlotInput in;
-    in.title = spec->title.empty() ? m.scenario.name : spec->title;
-    in.y_label = spec->y_label;
-    in.width = spec->width;
-    in.height = spec->height;
-    const std::vector<double> times = m.recorder->times();
-    std::vector<std::vector<double>> values;
-    values.reserve(columns.size());
-    for (int column : columns) values.push_back(m.recorder->series(column));
-    in.times = &times;
-    for (std::size_t i = 0; i < columns.size(); ++i)
-      in.series.push_back({spec->labels[i].empty() ? spec->signals[i].text : spec->labels[i], &values[i]});
-    std::string error = prepare_output(spec->file);
-    if (error.empty()) error = write_plot(in, spec->file);
-    if (!error.empty()) {
-      std::fprintf(m.options.out, "vplant run: %s\n", error.c_str());
-      rc = 2;
-    }
-  }
-
   auto& s = m.summary;
   s.simulated_s = sim::seconds(sched.now());
   s.wall_s = wall;
@@ -226,6 +204,13 @@ int Runner::run() {
     if (error.empty()) error = write_junit(m.junit_path, m.scenario.name, m.verdicts, wall, s.simulated_s);
     if (!error.empty()) {
       std::fprintf(m.options.out, "vplant run: %s\n", error.c_str());
+      rc = 2;
+    }
+  }
+  if (m.report) {
+    const auto record = m.report->finish(m.verdicts, s, m.options.seed.value_or(m.scenario.clock.seed), rc);
+    if (auto error = report::write_case(m.options.report_dir, record); !error.empty()) {
+      std::fprintf(m.options.out, "vplant run: report: %s\n", error.c_str());
       rc = 2;
     }
   }
@@ -251,7 +236,9 @@ int Runner::run() {
     std::fprintf(out, "\n  assertions: %zu passed, %zu failed\n", s.assertions - s.failures, s.failures);
     if (m.trace) std::fprintf(out, "  trace: %s\n", m.trace_path.c_str());
     if (!m.csv_path.empty()) std::fprintf(out, "  csv: %s (%zu rows)\n", m.csv_path.c_str(), m.recorder->rows());
-    for (const auto& [spec, columns] : m.plots) std::fprintf(out, "  plot: %s\n", spec->file.c_str());
+    if (m.report)
+      std::fprintf(out, "  report: %s\n",
+                   (std::filesystem::path(m.options.report_dir) / "cases" / report::case_id(m.scenario.name) / "index.html").c_str());
     if (!m.junit_path.empty()) std::fprintf(out, "  junit: %s\n", m.junit_path.c_str());
   }
   return rc;
@@ -273,7 +260,6 @@ int run_case(const ScenarioCases& cases, std::size_t i, bool several, const Envi
       // only what the command line asks for (--trace, --csv, --junit).
       s.outputs.trace.clear();
       s.outputs.csv.reset();
-      s.outputs.plots.clear();
       s.outputs.junit.clear();
     }
     RunOptions o = options;

@@ -5,7 +5,7 @@
 //   3 plant → devices   sensor inputs = plant outputs at `now`
 //   4 nodes             (scenario order) consume the tick's frames, sample inputs, drive outputs
 //   5 devices → plant   actuator commands for [now, now + dt]
-//   6 recorder          CSV/plot row: plant state at `now`, device outputs for the tick
+//   6 recorder          CSV/report row: plant state at `now`, device outputs for the tick
 //   7 plant             integrates [now, now + dt]
 // (the buses deliver after every component, so a request and its answer share a tick), runs it
 // until its duration, the end of the script, or SIGINT, and writes the outputs and the summary.
@@ -34,6 +34,7 @@ struct RunOptions {
   std::optional<sim::Duration> duration;   ///< --duration
   std::optional<std::uint64_t> seed;       ///< --seed
   std::string trace, csv, junit;           ///< override the scenario's outputs
+  std::string report_dir;                  ///< --report DIR: write this case into the HTML report (engine/report/)
   bool progress = false;                   ///< progress line on stderr (a terminal)
   bool quiet = false;                      ///< no summary (tests, benchmarks)
   bool strict_eds = false;                 ///< --strict: EDS nodes reject CiA 306 deviations

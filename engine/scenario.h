@@ -82,12 +82,10 @@ struct CsvSpec {
   std::vector<SignalExpr> signals;  ///< empty = every wired port
 };
 
+/// One plot of the HTML report's case page (engine/report/).
 struct PlotSpec {
-  std::string file;
   std::string title;
   std::string y_label;
-  int width = 1000;
-  int height = 600;
   std::vector<SignalExpr> signals;
   std::vector<std::string> labels;  ///< legend text per signal ("" = the expression)
   SourceMark mark;
@@ -96,7 +94,7 @@ struct PlotSpec {
 struct OutputSpec {
   std::string trace;  ///< candump -L log
   std::optional<CsvSpec> csv;
-  sim::Duration sample_period = sim::milliseconds(10);  ///< CSV and plots
+  sim::Duration sample_period = sim::milliseconds(10);  ///< CSV and the report's plots
   std::vector<PlotSpec> plots;
   std::string junit;
 };

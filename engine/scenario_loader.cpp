@@ -247,11 +247,10 @@ OutputSpec read_outputs(const YAML::Node& node, const std::string& file) {
       MapReader pr(item, file, "plot");
       PlotSpec p;
       p.mark = pr.mark();
-      p.file = read_string(pr.require("file"), file, "plot file");
+      // Plots are drawn in the HTML report (--report DIR); vplant writes no image files.
+      if (auto f = pr.get("file")) throw LoadError(mark_of(f, file), "plot: 'file' is gone: plots are drawn in the HTML report (vplant run --report DIR)");
       if (auto t = pr.get("title")) p.title = read_string(t, file, "title");
       if (auto y = pr.get("y_label")) p.y_label = read_string(y, file, "y_label");
-      if (auto w = pr.get("width")) p.width = static_cast<int>(read_integer(w, file, "width", 320, 4000));
-      if (auto h = pr.get("height")) p.height = static_cast<int>(read_integer(h, file, "height", 240, 3000));
       p.signals = read_signals(pr.require("signals"), file, &p.labels);
       if (p.signals.empty()) throw LoadError(p.mark, "plot: at least one signal");
       if (p.signals.size() > 8) throw LoadError(p.mark, "plot: at most 8 signals");

@@ -1,13 +1,11 @@
-// Outputs of a run: candump trace, CSV, PNG plot and JUnit XML.
+// Outputs of a run: candump trace, CSV and JUnit XML (the HTML report: tests/engine/report/).
 #include <gtest/gtest.h>
-#include <png.h>
 
 #include <fstream>
 #include <sstream>
 
 #include "tests/support/temp_path.h"
 #include "tests/engine/run_helper.h"
-#include "engine/plot.h"
 #include "tests/support/read_file.h"
 
 namespace {
@@ -26,9 +24,6 @@ clock: {duration: 1s}
 outputs:
   sample_period: 100ms
   csv: {file: OUT/run.csv, signals: [axis.position, "frame(0x185)[0:4] as i32"]}
-  plots:
-    - {file: OUT/plot.png, title: Axis, y_label: "position [mm]", width: 640, height: 400,
-       signals: [{signal: axis.position * 1000, label: plant}, "frame(0x185)[0:4] as i32 * 1e-3"]}
   junit: OUT/run.xml
   trace: OUT/run.log
 script:
@@ -42,7 +37,7 @@ script:
 
 }  // namespace
 
-TEST(Outputs, TraceCsvPlotAndJunit) {
+TEST(Outputs, TraceCsvAndJunit) {
   const vtest::TempPath out_dir("vplant-outputs");  // removed with what the run wrote into it
   const std::string& dir = out_dir.str();
   std::string text = kRun;
@@ -69,27 +64,8 @@ TEST(Outputs, TraceCsvPlotAndJunit) {
   EXPECT_EQ(trace.substr(0, 32), "(0000000000.000110) main 705#00\n");
   EXPECT_NE(trace.find("(0000000000.010130) main 000#0100\n"), std::string::npos);
 
-  std::FILE* f = std::fopen((dir + "/plot.png").c_str(), "rb");
-  ASSERT_NE(f, nullptr);
-  png_image image{};
-  image.version = PNG_IMAGE_VERSION;
-  ASSERT_TRUE(png_image_begin_read_from_stdio(&image, f));
-  EXPECT_EQ(image.width, 640u);
-  EXPECT_EQ(image.height, 400u);
-  png_image_free(&image);
-  std::fclose(f);
-
   const auto xml = read_file(dir + "/run.xml");
   EXPECT_NE(xml.find("<testsuite name=\"test\" tests=\"1\" failures=\"1\""), std::string::npos) << xml;
   EXPECT_NE(xml.find("name=\"never reached\""), std::string::npos);
   EXPECT_NE(xml.find("expected axis.position &gt; 5 within 0.5 s"), std::string::npos) << xml;
-}
-
-TEST(Plot, NiceTicksUseOneTwoFiveSteps) {
-  double step;
-  const auto t = scenario::nice_ticks(0.0, 1.0, 5, step);
-  EXPECT_DOUBLE_EQ(step, 0.2);
-  ASSERT_EQ(t.size(), 6u);
-  scenario::nice_ticks(-3e5, 2.2e7, 6, step);
-  EXPECT_DOUBLE_EQ(step, 5e6);
 }

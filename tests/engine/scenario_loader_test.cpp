@@ -34,8 +34,7 @@ outputs:
   sample_period: 100Hz
   csv: {file: out/demo.csv, signals: [axis.position, "frame(aux:0x185)[0:2] as i16 / 10"]}
   plots:
-    - file: out/demo.png
-      title: Demo
+    - title: Demo
       y_label: position [mm]
       signals: [{signal: axis.position * 1000, label: position}]
   junit: out/demo.xml

@@ -27,7 +27,7 @@ if grep -E '^\./usr/include/' "$tmp/files" | grep -v -E '^\./usr/include/(vplant
 fi
 depends=$(dpkg-deb -f "$deb" Depends)
 echo "Depends: $depends"
-for p in libc6 libstdc++6 libyaml-cpp0.7 libode8 libpng16-16 libfmt9 libmicrohttpd12; do
+for p in libc6 libstdc++6 libyaml-cpp0.7 libode8 libfmt9 libmicrohttpd12; do
   echo "$depends" | tr ',' '\n' | sed 's/^ *//; s/ .*//' | grep -qxF "$p" || { echo "Depends lacks $p"; fail=1; }
 done
 [ "$(dpkg-deb -f "$deb" Package)" = vplant ] && [ "$(dpkg-deb -f "$deb" Version)" = "$version" ] || { echo "bad Package/Version"; fail=1; }

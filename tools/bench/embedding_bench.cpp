@@ -4,7 +4,7 @@
 // Prints, per way in, the CPU seconds of one run and the simulated seconds per CPU second:
 //   cli      `vplant run reference-plant.yaml --quiet --trace FILE` as a child process (its CPU
 //            from getrusage(RUSAGE_CHILDREN)): start-up, load, 6 s with the scripted master, the
-//            file's outputs (trace, CSV, three PNG plots)
+//            file's outputs (trace, CSV)
 //   library  vplant::Simulation::load_file + run_for(6 s) with the file's script
 //            (Options::run_script) and the trace file; CPU from CLOCK_PROCESS_CPUTIME_ID
 //   example  the same with examples/cylinder_master's CylinderMaster instead of the script

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "control/control_plane.h"
+#include "engine/report/report_writer.h"
 #include "engine/runner.h"
 #include "engine/yaml_fields.h"
 #include "tools/vplant/commands.h"
@@ -34,6 +35,8 @@ struct RunArgs {
   double ui_speed = -1;
   bool strict = false;
   std::string case_name;
+  std::string report;
+  bool report_no_index = false;
 };
 
 bool stop_active_run() {
@@ -70,6 +73,7 @@ int run(const RunArgs& a) {
   o.quiet = a.quiet;
   o.strict_eds = a.strict;
   o.case_name = a.case_name;
+  o.report_dir = a.report;
   o.progress = !a.quiet && ::isatty(STDERR_FILENO);
   // The control plane: --ui overrides the scenario's `ui:`; made once the scenario is loaded.
   std::unique_ptr<control::ControlPlane> ui;
@@ -93,7 +97,16 @@ int run(const RunArgs& a) {
     if (auto err = ui->bind(); !err.empty()) throw scenario::LoadError(mark, err);
     return ui.get();
   };
-  return scenario::run_scenario_file(a.scenario, scenario::default_environment(), o);
+  int rc = scenario::run_scenario_file(a.scenario, scenario::default_environment(), o);
+  // The index lists every case in the folder (`vplant test` writes it once, after all its cases).
+  if (!a.report.empty() && !a.report_no_index) {
+    if (auto err = scenario::report::write_index(a.report); !err.empty()) {
+      std::fprintf(stderr, "vplant run: report: %s\n", err.c_str());
+      return kExitBadInput;
+    }
+    if (!a.quiet) std::fprintf(stderr, "  report index: %s/index.html\n", a.report.c_str());
+  }
+  return rc;
 }
 
 }  // namespace
@@ -123,6 +136,9 @@ Runner add_run_command(CLI::App& app) {
   app.add_flag("--strict", a->strict, "EDS nodes: reject the CiA 306 deviations that are otherwise loaded with a warning");
   // `vplant test` runs each case of a sweep as its own process (docs/scenarios.md, "matrix").
   app.add_option("--case", a->case_name, "run only this case of the file's matrix")->group("");
+  app.add_option("--report", a->report, "write the HTML report into DIR: DIR/index.html and DIR/cases/<case>/ (docs/scenarios.md)");
+  app.add_flag("--report-no-index", a->report_no_index, "with --report: write only this run's case, not DIR/index.html (vplant test)")
+      ->group("");
   return [a] { return run(*a); };
 }
 

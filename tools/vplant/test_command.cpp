@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "engine/junit_merge.h"
+#include "engine/report/report_writer.h"
 #include "engine/speed_text.h"
 #include "engine/yaml_fields.h"
 #include "tools/vplant/case_pool.h"
@@ -46,15 +47,6 @@ struct TestArgs {
   std::string timeout = kDefaultTimeout;
   bool list = false;
 };
-
-/// The suite's index page over the pages its cases wrote (`--report`). The report writer is
-/// branch `report`'s (engine/report/report_writer.h): this is where its
-/// `scenario::report::write_index(dir)` is called once it is merged. Returns an error, "" = done.
-std::string write_report_index(const std::string& dir) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  return ec ? "cannot create '" + dir + "': " + ec.message() : std::string();
-}
 
 struct Outcome {
   enum class Kind { Pass, Fail, Error, Timeout, Crash, Stopped, NotRun } kind = Kind::NotRun;
@@ -287,7 +279,7 @@ int run_tests(const TestArgs& a) {
     }
   }
   if (!a.report.empty()) {
-    if (const auto error = write_report_index(a.report); !error.empty()) {
+    if (const auto error = scenario::report::write_index(a.report); !error.empty()) {
       std::fprintf(stderr, "vplant test: %s\n", error.c_str());
       rc = kExitBadInput;
     }

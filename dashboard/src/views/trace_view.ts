@@ -6,7 +6,11 @@ import { TraceBuffer } from '../trace_buffer';
 import { applyFilter, SERVICE_GROUPS, ServiceGroup, TraceFilter } from '../trace_filter';
 import type { Frame, ScenarioNode } from '../types';
 
-const ROWS_RENDERED = 400;
+/** The live page renders the newest 400 rows; the report (a fixed, bounded sample) all of them. */
+export interface TraceViewOptions {
+  rowsRendered?: number;
+  live?: boolean;  // Pause and Clear: a stream goes on, a report's frames do not
+}
 
 export class TraceView {
   readonly buffer = new TraceBuffer(20000);
@@ -18,7 +22,11 @@ export class TraceView {
   private dirty = true;
   private streamDropped = 0;
 
-  constructor(host: HTMLElement, nodes: readonly ScenarioNode[]) {
+  private rowsRendered: number;
+
+  constructor(host: HTMLElement, nodes: readonly Pick<ScenarioNode, 'name' | 'node_id'>[], options: TraceViewOptions = {}) {
+    this.rowsRendered = options.rowsRendered ?? 400;
+    const live = options.live ?? true;
     const nodeFilters = el('fieldset', { class: 'filters' }, el('legend', {}, 'Nodes'));
     for (const n of nodes) {
       const box = el('input', { type: 'checkbox', checked: true, 'data-testid': `trace-node-${n.node_id}` });
@@ -35,8 +43,8 @@ export class TraceView {
     }
     this.pauseButton = button('Pause', { 'data-testid': 'trace-pause', 'aria-pressed': 'false' }, () => this.togglePause());
     const controls = el('div', { class: 'trace-controls' },
-      this.pauseButton,
-      button('Clear', { 'data-testid': 'trace-clear' }, () => { this.buffer.clear(); this.invalidate(); }),
+      live && this.pauseButton,
+      live && button('Clear', { 'data-testid': 'trace-clear' }, () => { this.buffer.clear(); this.invalidate(); }),
       button('Export candump log', { 'data-testid': 'trace-export' }, () => this.export()),
       this.status);
     const table = el('table', { class: 'trace', 'data-testid': 'trace-table', 'aria-label': 'Decoded CAN trace' },
@@ -95,7 +103,7 @@ export class TraceView {
     if (!this.dirty) return;
     this.dirty = false;
     const shown = this.shown();
-    const rows = shown.slice(-ROWS_RENDERED).reverse().map((f) =>
+    const rows = shown.slice(-this.rowsRendered).reverse().map((f) =>
       el('tr', { class: `svc-${f.service.toLowerCase()}`, 'data-service': f.service },
         el('td', { class: 'mono' }, formatTime(f.t_us)), el('td', {}, f.bus), el('td', {}, f.dir),
         el('td', { class: 'mono' }, f.ext ? hex(f.id, 8) : hex(f.id, 3)), el('td', {}, f.service),

@@ -22,12 +22,6 @@ gitlab=$(sed -n 's/^ *- \(build\/tools\/vplant\/vplant test .*\)$/\1/p' "$src/do
 [ -n "$gitlab" ] || fail "docs/ci.md has no GitLab CI 'vplant test' line"
 [ $failures -eq 0 ] || exit 1
 github=$(printf '%s' "$github" | sed 's/\${{ matrix.shard }}/1/')
-# The HTML report comes from `vplant run --report` (docs/ci.md's lines ask for it); a build
-# without it runs the same lines without the report.
-if ! "$vplant" run --help | grep -q -- '--report'; then
-  github=$(printf '%s' "$github" | sed 's/ --report [^ ]*//')
-  gitlab=$(printf '%s' "$gitlab" | sed 's/ --report [^ ]*//')
-fi
 
 # A checkout as CI has it: scenarios/ and the binary at build/tools/vplant/vplant.
 for job in github gitlab; do
@@ -43,9 +37,7 @@ done
 cat "$tmp/github/out/junit.xml" "$tmp/gitlab/out/junit.xml" | sed -n 's/^  <testsuite name="\([^"]*\)".*/\1/p' | sort >"$tmp/suites.txt"
 cmp "$tmp/all.txt" "$tmp/suites.txt" || { diff "$tmp/all.txt" "$tmp/suites.txt"; fail "the two shards' JUnit suites are not the suite, each once"; }
 [ "$(wc -l <"$tmp/all.txt")" -eq "$(ls "$src"/scenarios/regression/*.yaml | wc -l)" ] || fail "not one case per regression file"
-if "$vplant" run --help | grep -q -- '--report'; then
-  for job in github gitlab; do [ -s "$tmp/$job/out/report/index.html" ] || fail "$job: no out/report/index.html"; done
-fi
+for job in github gitlab; do [ -s "$tmp/$job/out/report/index.html" ] || fail "$job: no out/report/index.html"; done
 
 # The external master's lines: the plant served over socketcand (no vcan, no root), the wait for
 # its "is up" line, then a python-can client (the master's stand-in) reads the HLT 1100's 1000h by
