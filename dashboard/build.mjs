@@ -15,34 +15,24 @@ const option = (name) => {
   return i >= 0 && args[i + 1] ? resolve(args[i + 1]) : null;
 };
 
+// The page bundles (the dashboard, the report): one minified script for the browsers in use.
+const browserBundle = {
+  absWorkingDir: here,
+  bundle: true,
+  minify: true,
+  sourcemap: false,
+  format: 'iife',
+  target: ['chrome100', 'firefox100', 'safari15'],
+  legalComments: 'none',
+  logLevel: 'warning',
+};
+
 async function buildPage(outdir) {
   await mkdir(join(outdir, 'assets'), { recursive: true });
-  await build({
-    absWorkingDir: here,
-    entryPoints: { app: 'src/main.ts' },
-    outdir: join(outdir, 'assets'),
-    bundle: true,
-    minify: true,
-    sourcemap: false,
-    format: 'iife',
-    target: ['chrome100', 'firefox100', 'safari15'],
-    legalComments: 'none',
-    logLevel: 'warning',
-  });
+  await build({ ...browserBundle, entryPoints: { app: 'src/main.ts' }, outdir: join(outdir, 'assets') });
   await copyFile(join(here, 'index.html'), join(outdir, 'index.html'));
   // The report (engine/report/): vplant writes these two files into the report folder.
-  await build({
-    absWorkingDir: here,
-    entryPoints: { report: 'src/report/main.ts' },
-    outdir: join(outdir, 'report'),
-    bundle: true,
-    minify: true,
-    sourcemap: false,
-    format: 'iife',
-    target: ['chrome100', 'firefox100', 'safari15'],
-    legalComments: 'none',
-    logLevel: 'warning',
-  });
+  await build({ ...browserBundle, entryPoints: { report: 'src/report/main.ts' }, outdir: join(outdir, 'report') });
 }
 
 async function entries(folder, suffix) {
