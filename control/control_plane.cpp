@@ -13,7 +13,7 @@
 #include "control/event_hub.h"
 #include "control/json_views.h"
 #include "control/server_thread_priority.h"
-#include "devices/canopen/nmt_state.h"
+#include "devices/canopen/nmt_command.h"
 #include "devices/canopen/sdo_abort.h"
 #include "engine/fault_codec.h"
 #include "engine/fault_injector.h"
@@ -158,15 +158,6 @@ std::string abort_hex(std::uint32_t code) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "0x%08X", code);
   return buf;
-}
-
-std::optional<canopen::NmtCommand> nmt_command(const std::string& s) {
-  if (s == "start") return canopen::NmtCommand::Start;
-  if (s == "stop") return canopen::NmtCommand::Stop;
-  if (s == "preop") return canopen::NmtCommand::EnterPreOperational;
-  if (s == "reset_node") return canopen::NmtCommand::ResetNode;
-  if (s == "reset_comm") return canopen::NmtCommand::ResetCommunication;
-  return std::nullopt;
 }
 
 }  // namespace
@@ -561,8 +552,8 @@ struct ControlPlane::Server {
 
   void nmt(const httplib::Request& req, httplib::Response& res) {
     const auto body = parse_body(req);
-    const auto command = nmt_command(string_field(body, "command"));
-    if (!command) throw HttpError{400, "field 'command' must be start, stop, preop, reset_node or reset_comm"};
+    const auto command = canopen::parse_nmt_command(string_field(body, "command"));
+    if (!command) throw HttpError{400, "field 'command' must be " + std::string(canopen::kNmtCommandWords)};
     if (!body.contains("node")) throw HttpError{400, "missing field 'node' (a node's name, or 0 for all)"};
     std::optional<std::size_t> target;
     if (body["node"].is_string()) target = node(body["node"].get<std::string>());

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "devices/canopen/nmt_command.h"
 #include "engine/fault_codec.h"
 
 namespace scenario {
@@ -66,12 +67,9 @@ StepAction read_action(const std::string& kind, const YAML::Node& v, const std::
     } else {
       cmd = read_string(v, file, "nmt");
     }
-    if (cmd == "start") s.command = canopen::NmtCommand::Start;
-    else if (cmd == "stop") s.command = canopen::NmtCommand::Stop;
-    else if (cmd == "pre_operational") s.command = canopen::NmtCommand::EnterPreOperational;
-    else if (cmd == "reset_node") s.command = canopen::NmtCommand::ResetNode;
-    else if (cmd == "reset_communication") s.command = canopen::NmtCommand::ResetCommunication;
-    else throw LoadError(mark_of(v, file), "nmt: '" + cmd + "' is not start, stop, pre_operational, reset_node or reset_communication");
+    const auto command = canopen::parse_nmt_command(cmd);
+    if (!command) throw LoadError(mark_of(v, file), "nmt: '" + cmd + "' is not " + std::string(canopen::kNmtCommandWords));
+    s.command = *command;
     summary = "nmt " + cmd + " " + describe(s.node);
     return s;
   }

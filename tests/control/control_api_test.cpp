@@ -220,7 +220,7 @@ TEST_F(ControlApi, ObjectDictionaryListsEntriesWithValues) {
 
 TEST_F(ControlApi, NmtCommandsAndRawFrames) {
   start_all();
-  ASSERT_EQ(status(p().post("/api/nmt", {{"command", "preop"}, {"node", "wdga"}})), 200);
+  ASSERT_EQ(status(p().post("/api/nmt", {{"command", "pre_operational"}, {"node", "wdga"}})), 200);
   p().run_ms(5);
   EXPECT_EQ(node("wdga")["nmt"], "PRE-OPERATIONAL");
   EXPECT_EQ(node("hlt")["nmt"], "OPERATIONAL");
@@ -228,7 +228,17 @@ TEST_F(ControlApi, NmtCommandsAndRawFrames) {
   ASSERT_EQ(status(p().post("/api/frames", {{"bus", "main"}, {"id", "0x000"}, {"data", "017F"}})), 200);
   p().run_ms(5);
   EXPECT_EQ(node("wdga")["nmt"], "OPERATIONAL");
+  // reset_communication: back to pre-operational after its boot-up.
+  ASSERT_EQ(status(p().post("/api/nmt", {{"command", "reset_communication"}, {"node", "wdga"}})), 200);
+  p().run_ms(20);
+  EXPECT_EQ(node("wdga")["nmt"], "PRE-OPERATIONAL");
+  ASSERT_EQ(status(p().post("/api/nmt", {{"command", "start"}, {"node", "wdga"}})), 200);
+  p().run_ms(5);
+  EXPECT_EQ(node("wdga")["nmt"], "OPERATIONAL");
   EXPECT_EQ(status(p().post("/api/nmt", {{"command", "dance"}, {"node", 0}})), 400);
+  // The old words are gone: one vocabulary.
+  EXPECT_EQ(status(p().post("/api/nmt", {{"command", "preop"}, {"node", 0}})), 400);
+  EXPECT_EQ(status(p().post("/api/nmt", {{"command", "reset_comm"}, {"node", 0}})), 400);
   EXPECT_EQ(status(p().post("/api/nmt", {{"command", "start"}, {"node", "ghost"}})), 404);
   EXPECT_EQ(status(p().post("/api/nmt", {{"command", "start"}, {"node", 5}})), 400);
   EXPECT_EQ(status(p().post("/api/frames", {{"id", 0x800}, {"data", "00"}})), 400);
