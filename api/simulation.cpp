@@ -4,20 +4,17 @@
 // real time and the CLI's summary.
 #include <vplant/simulation.h>
 
-#include <yaml-cpp/yaml.h>
-
 #include <array>
-#include <deque>
 #include <map>
 
 #include "api/frame_convert.h"
 #include "devices/device.h"
 #include "engine/environment.h"
+#include "engine/fault_codec.h"
 #include "engine/fault_injector.h"
 #include "engine/node_group.h"
 #include "engine/outcome.h"
 #include "engine/scenario_loader.h"
-#include "engine/script_loader.h"
 #include "engine/scripted_master.h"
 #include "engine/tick_assembly.h"
 #include "engine/world.h"
@@ -149,7 +146,6 @@ struct Simulation::Impl {
   std::vector<std::unique_ptr<CallerEndpoint>> endpoints;
   std::vector<std::unique_ptr<LastFrames>> last_frames;  // per bus
   std::map<std::string, scenario::Signal, std::less<>> signals;
-  std::deque<std::vector<scenario::Step>> injected;  // the FaultInjector refers to these specs
   bool running = false;  // inside run_for/run_until (RunGuard)
 
   void build();
@@ -312,24 +308,9 @@ void Simulation::set_input(const std::string& node, const std::string& input, do
 
 void Simulation::inject_fault(const std::string& yaml) {
   auto& m = *impl_;
-  const std::string file = "<fault>";
   try {
-    YAML::Node body;
-    try {
-      body = YAML::Load(yaml);
-    } catch (const YAML::ParserException& e) {
-      throw scenario::LoadError(scenario::SourceMark{file, e.mark.line + 1, e.mark.column + 1}, e.msg);
-    }
-    // One `fault:` step of a script: the same syntax, checks and messages.
-    YAML::Node step;
-    step["fault"] = body;
-    YAML::Node script;
-    script.push_back(step);
-    auto steps = scenario::read_script(script, file);
-    const auto& spec = std::get<scenario::FaultStep>(steps.front().action).fault;
-    m.faults->check(spec);
-    m.injected.push_back(std::move(steps));
-    m.faults->apply(std::get<scenario::FaultStep>(m.injected.back().front().action).fault, m.scheduler->now());
+    // The scenario's fault codec: the same syntax, checks and messages as a script's `fault:`.
+    m.faults->inject(scenario::parse_fault(yaml, "<fault>"), m.scheduler->now());
   } catch (const scenario::LoadError& e) {
     rethrow(e);
   }

@@ -13,8 +13,9 @@
 #include "control/http_server.h"
 #include "control/json_views.h"
 #include "control/server_thread_priority.h"
-#include "devices/canopen/nmt_state.h"
+#include "devices/canopen/nmt_command.h"
 #include "devices/canopen/sdo_abort.h"
+#include "engine/fault_codec.h"
 #include "engine/fault_injector.h"
 #include "engine/scenario.h"
 #include "engine/value_codec.h"
@@ -145,15 +146,6 @@ std::string abort_hex(std::uint32_t code) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "0x%08X", code);
   return buf;
-}
-
-std::optional<canopen::NmtCommand> nmt_command(const std::string& s) {
-  if (s == "start") return canopen::NmtCommand::Start;
-  if (s == "stop") return canopen::NmtCommand::Stop;
-  if (s == "preop") return canopen::NmtCommand::EnterPreOperational;
-  if (s == "reset_node") return canopen::NmtCommand::ResetNode;
-  if (s == "reset_comm") return canopen::NmtCommand::ResetCommunication;
-  return std::nullopt;
 }
 
 }  // namespace
@@ -353,7 +345,7 @@ struct ControlPlane::Server {
          {{"device", device_faults},
           {"wire", {"drop", "delay", "corrupt"}},
           {"bus_off", bus_off},
-          {"power", {"off", "on", "cycle", "reset"}},
+          {"power", {"power_off", "power_on", "power_cycle", "reset"}},
           {"plant", plant}}},
         {"inputs", inputs}};
   }
@@ -544,8 +536,8 @@ struct ControlPlane::Server {
 
   void nmt(const http::Request& req, http::Response& res) {
     const auto body = parse_body(req);
-    const auto command = nmt_command(string_field(body, "command"));
-    if (!command) throw HttpError{400, "field 'command' must be start, stop, preop, reset_node or reset_comm"};
+    const auto command = canopen::parse_nmt_command(string_field(body, "command"));
+    if (!command) throw HttpError{400, "field 'command' must be " + std::string(canopen::kNmtCommandWords)};
     if (!body.contains("node")) throw HttpError{400, "missing field 'node' (a node's name, or 0 for all)"};
     std::optional<std::size_t> target;
     if (body["node"].is_string()) target = node(body["node"].get<std::string>());
@@ -589,112 +581,48 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}, {"queued", true}});
   }
 
-  scenario::FaultSpec fault_spec(const json& body) {
-    scenario::FaultSpec spec;
-    spec.mark = scenario::SourceMark{"api", 0, 0};
-    const auto kind = string_field(body, "kind");
-    if (kind == "device") {
-      scenario::DeviceFault d;
-      d.node = node_names[node(string_field(body, "node"))];
-      d.fault = string_field(body, "fault");
-      d.active = bool_field(body, "active", true);
-      spec.summary = "device " + d.node + " " + d.fault + (d.active ? "" : " (cleared)");
-      spec.action = d;
-    } else if (kind == "wire") {
-      scenario::WireFault w;
-      w.bus = string_field(body, "bus", bus_names.front());
-      if (!bus_index.count(w.bus)) throw HttpError{404, "no bus '" + w.bus + "'"};
-      w.match.id = static_cast<std::uint32_t>(*integer_field(body, "match", 0, sim::CanFrame::kMaxStdId));
-      w.match.mask = static_cast<std::uint32_t>(*integer_field(body, "mask", 0, sim::CanFrame::kMaxStdId, 0x7FF));
-      const auto action = string_field(body, "action");
-      if (action == "drop") {
-        w.kind = scenario::WireFault::Kind::Drop;
-      } else if (action == "delay") {
-        w.kind = scenario::WireFault::Kind::Delay;
-        w.delay = sim::milliseconds(*integer_field(body, "delay_ms", 1, 60000));
-      } else if (action == "corrupt") {
-        w.kind = scenario::WireFault::Kind::Corrupt;
-        w.byte = static_cast<int>(*integer_field(body, "byte", 0, 7, 0));
-        w.xor_mask = static_cast<std::uint8_t>(*integer_field(body, "xor", 0, 255, 0xFF));
-      } else {
-        throw HttpError{400, "field 'action' must be drop, delay or corrupt"};
-      }
-      if (body.contains("probability")) {
-        w.probability = number_field(body, "probability");
-        if (w.probability < 0 || w.probability > 1) throw HttpError{400, "field 'probability' out of range 0..1"};
-      }
-      w.count = static_cast<std::uint64_t>(*integer_field(body, "count", 0, 1000000000, 0));
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "wire %s %s 0x%03X/0x%03X", w.bus.c_str(), action.c_str(), w.match.id, w.match.mask);
-      spec.summary = buf;
-      spec.action = w;
-    } else if (kind == "bus_off") {
-      scenario::BusOff b;
-      b.node = node_names[node(string_field(body, "node"))];
-      spec.summary = "bus-off " + b.node;
-      spec.action = b;
-    } else if (kind == "power") {
-      scenario::Power p;
-      p.node = node_names[node(string_field(body, "node"))];
-      const auto action = string_field(body, "action");
-      if (action == "off") p.kind = scenario::Power::Kind::Off;
-      else if (action == "on") p.kind = scenario::Power::Kind::On;
-      else if (action == "reset") p.kind = scenario::Power::Kind::Reset;
-      else if (action == "cycle") p.kind = scenario::Power::Kind::Cycle;
-      else throw HttpError{400, "field 'action' must be off, on, cycle or reset"};
-      p.off_time = sim::milliseconds(*integer_field(body, "off_ms", 0, 60000, 0));
-      spec.summary = "power " + action + " " + p.node;
-      spec.action = p;
-    } else if (kind == "plant") {
-      scenario::PlantParameter p;
-      p.name = string_field(body, "name");
-      p.value = number_field(body, "value");
-      spec.summary = "plant " + p.name + " = " + scenario::format_value(p.value);
-      spec.action = p;
-    } else {
-      throw HttpError{400, "field 'kind' must be device, wire, bus_off, power or plant"};
+  /// The body is a fault as a scenario writes it, as JSON (engine/fault_codec.h, docs/api.md).
+  static scenario::FaultSpec fault_spec(const http::Request& req) {
+    parse_body(req);  // a JSON object (valid UTF-8), as every body of the API
+    try {
+      return scenario::parse_fault(req.body, "<body>");
+    } catch (const scenario::LoadError& e) {
+      throw HttpError{400, e.what()};
     }
-    return spec;
+  }
+
+  /// Drops the live faults whose `for:` has run out (the fault injector ended them).
+  static void forget_ended(std::vector<SimBridge::LiveFault>& faults, std::int64_t now_us) {
+    std::erase_if(faults, [now_us](const SimBridge::LiveFault& f) { return f.until_us >= 0 && f.until_us <= now_us; });
   }
 
   void inject(const http::Request& req, http::Response& res) {
-    const auto spec = fault_spec(parse_body(req));
+    const auto spec = fault_spec(req);
     struct Result {
       std::string error;
       int id = 0;
       bool active = false;
     };
     const auto r = call<Result>([this, spec](const scenario::RunContext& c) {
-      Result out;
       const auto now = c.scheduler.now();
+      const auto now_us = now.time_since_epoch().count();
       SimBridge::LiveFault live;
-      if (const auto* p = std::get_if<scenario::PlantParameter>(&spec.action)) {
-        // Checked and applied here, so a refused value changes nothing and fails no verdict.
-        auto* plant = c.world.plant();
-        if (!plant) return Result{"the scenario has no plant", 0, false};
-        const auto old = plant->parameter(p->name);
-        if (!old) return Result{"the plant has no parameter '" + p->name + "'", 0, false};
-        if (auto err = plant->set_parameter(p->name, p->value); !err.empty()) return Result{err, 0, false};
-        const std::string name = p->name;
-        const double value = *old;
-        live.clear = [plant, name, value](sim::Time) { plant->set_parameter(name, value); };
-      } else {
-        try {
-          c.faults.check(spec);
-        } catch (const std::exception& e) {
-          std::string why = e.what();
-          if (const auto at = why.find("fault: "); at != std::string::npos) why = why.substr(at + 7);
-          return Result{why, 0, false};
-        }
-        live.clear = c.faults.apply_clearable(spec, now);
+      try {
+        live.clear = c.faults.inject(spec, now);
+      } catch (const scenario::LoadError& e) {
+        return Result{e.what(), 0, false};
       }
+      auto& faults = cp.bridge_.live_faults();
+      forget_ended(faults, now_us);
+      Result out;
       out.id = cp.bridge_.next_fault_id();
       out.active = static_cast<bool>(live.clear);
       if (out.active) {
         live.id = out.id;
-        live.summary = spec.summary;
-        live.since_us = now.time_since_epoch().count();
-        cp.bridge_.live_faults().push_back(std::move(live));
+        live.summary = spec.name;
+        live.since_us = now_us;
+        if (spec.duration) live.until_us = now_us + spec.duration->count();
+        faults.push_back(std::move(live));
       }
       return out;
     });
@@ -703,10 +631,15 @@ struct ControlPlane::Server {
   }
 
   void list_faults(const http::Request&, http::Response& res) {
-    const auto a = call<json>([this](const scenario::RunContext&) {
+    const auto a = call<json>([this](const scenario::RunContext& c) {
+      auto& faults = cp.bridge_.live_faults();
+      forget_ended(faults, c.scheduler.now().time_since_epoch().count());
       json out = json::array();
-      for (const auto& f : cp.bridge_.live_faults())
-        out.push_back({{"id", f.id}, {"summary", f.summary}, {"since_t_us", f.since_us}});
+      for (const auto& f : faults) {
+        json j = {{"id", f.id}, {"summary", f.summary}, {"since_t_us", f.since_us}};
+        if (f.until_us >= 0) j["until_t_us"] = f.until_us;
+        out.push_back(std::move(j));
+      }
       return out;
     });
     reply(res, 200, a);
@@ -717,6 +650,7 @@ struct ControlPlane::Server {
     const int id = static_cast<int>(*integer_field(q, "id", 1, INT32_MAX));
     const bool found = call<bool>([this, id](const scenario::RunContext& c) {
       auto& faults = cp.bridge_.live_faults();
+      forget_ended(faults, c.scheduler.now().time_since_epoch().count());
       for (auto it = faults.begin(); it != faults.end(); ++it) {
         if (it->id != id) continue;
         auto clear = std::move(it->clear);

@@ -154,6 +154,7 @@ class SimBridge final : public scenario::RunExtension {
     int id = 0;
     std::string summary;
     std::int64_t since_us = 0;
+    std::int64_t until_us = -1;  ///< when its `for:` ends it; -1: until DELETE
     std::function<void(sim::Time)> clear;
   };
   std::vector<LiveFault>& live_faults() { return live_faults_; }

@@ -1,5 +1,7 @@
 #include "engine/fault_injector.h"
 
+#include <memory>
+
 namespace scenario {
 
 FaultInjector::FaultInjector(World& world, Verdicts& verdicts, Log log)
@@ -57,16 +59,35 @@ void FaultInjector::check(const FaultSpec& f) {
 }
 
 void FaultInjector::apply(const FaultSpec& f, sim::Time now) {
-  auto clear = apply_now(f, now);
+  auto clear = apply_now(f, now, nullptr);
   if (f.duration && clear) undo_.push_back({now + *f.duration, std::move(clear)});
 }
 
-FaultInjector::Clear FaultInjector::apply_clearable(const FaultSpec& f, sim::Time now) { return apply_now(f, now); }
+FaultInjector::Clear FaultInjector::inject(const FaultSpec& f, sim::Time now) {
+  check(f);
+  std::string refused;
+  auto clear = apply_now(f, now, &refused);
+  if (!refused.empty()) throw LoadError(f.mark, "fault: " + refused);
+  if (!clear) return clear;
+  // Ended by whichever comes first, the caller or `for:`; the other then does nothing.
+  auto once = std::make_shared<Clear>(std::move(clear));
+  Clear end = [once](sim::Time t) {
+    if (!*once) return;
+    Clear c = std::move(*once);
+    *once = nullptr;
+    c(t);
+  };
+  if (f.duration) undo_.push_back({now + *f.duration, end});
+  return end;
+}
 
-FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now) {
-  ++applied_;
+FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now, std::string* refused) {
+  const auto note = [&] {
+    ++applied_;
+    if (log_) log_(now, "fault: " + f.summary + (f.duration ? " for " + format_value(sim::seconds(*f.duration)) + " s" : ""));
+  };
+  if (!refused) note();
   Clear clear;
-  if (log_) log_(now, "fault: " + f.summary + (f.duration ? " for " + format_value(sim::seconds(*f.duration)) + " s" : ""));
   std::visit(
       [&](const auto& a) {
         using T = std::decay_t<decltype(a)>;
@@ -94,6 +115,10 @@ FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now)
         } else if constexpr (std::is_same_v<T, DeviceFault>) {
           auto* device = node(a.node).device.get();
           if (auto err = device->inject_fault(a.fault, a.active); !err.empty()) {
+            if (refused) {
+              *refused = err;
+              return;
+            }
             verdicts_.fail("fault " + f.summary, f.mark, now, "fault applied", err);
             return;
           }
@@ -122,6 +147,10 @@ FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now)
           auto* plant = world_.plant();
           const auto old = plant->parameter(a.name);
           if (auto err = plant->set_parameter(a.name, a.value); !err.empty()) {
+            if (refused) {
+              *refused = err;
+              return;
+            }
             verdicts_.fail("fault " + f.summary, f.mark, now, "plant parameter accepted", err);
             return;
           }
@@ -133,6 +162,7 @@ FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now)
         }
       },
       f.action);
+  if (refused && refused->empty()) note();
   return clear;
 }
 

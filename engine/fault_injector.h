@@ -28,11 +28,14 @@ class FaultInjector final : public sim::Steppable {
   void check(const FaultSpec& f);
   /// Applies `f` now (and schedules its end if it has a duration).
   void apply(const FaultSpec& f, sim::Time now);
-  /// What undoes a fault applied by apply_clearable() (call it between ticks); empty when the
-  /// fault has nothing to undo (power on, reset, a fault that was refused).
+  /// What undoes a fault applied by inject() (call it between ticks); empty when the fault has
+  /// nothing to undo (power on, reset, a power cycle).
   using Clear = std::function<void(sim::Time)>;
-  /// Applies `f` (without a duration) now and returns what ends it: faults injected live.
-  Clear apply_clearable(const FaultSpec& f, sim::Time now);
+  /// A fault injected into a running plant (the HTTP API, the library): checks `f` and applies
+  /// it now. A device fault or plant value that its target refuses throws LoadError at f.mark
+  /// and changes nothing (a scenario's own faults fail a verdict instead). Returns what ends it
+  /// early, safe to call after it ended; with `for:` the injector also ends it then.
+  Clear inject(const FaultSpec& f, sim::Time now);
 
   void step(sim::Time now, sim::Duration dt) override;
   std::size_t applied() const { return applied_; }
@@ -48,7 +51,9 @@ class FaultInjector final : public sim::Steppable {
     std::function<void(sim::Time)> action;
   };
   NodeInstance& node(const std::string& name);
-  Clear apply_now(const FaultSpec& f, sim::Time now);
+  /// `refused`: null for a scenario's fault (a refusal fails a verdict), else where a refusal is
+  /// told (and nothing is logged or counted).
+  Clear apply_now(const FaultSpec& f, sim::Time now, std::string* refused);
 
   World& world_;
   Verdicts& verdicts_;

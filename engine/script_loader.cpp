@@ -2,6 +2,9 @@
 
 #include <cstdio>
 
+#include "devices/canopen/nmt_command.h"
+#include "engine/fault_codec.h"
+
 namespace scenario {
 
 namespace {
@@ -31,50 +34,6 @@ std::string describe(const NodeRef& r) {
   return "node " + std::to_string(r.node_id);
 }
 
-Condition read_condition(MapReader& r, const std::string& file) {
-  Condition c;
-  const auto s = r.require("signal");
-  c.signal = parse_signal(read_string(s, file, "signal"), mark_of(s, file));
-  const auto op = r.one_of({"above", "below", "between", "outside", "value"});
-  const auto v = r.get(op);
-  if (op == "above" || op == "below") {
-    c.op = op == "above" ? Condition::Op::Above : Condition::Op::Below;
-    c.a = read_number(v, file, op);
-  } else if (op == "between" || op == "outside") {
-    c.op = op == "between" ? Condition::Op::Between : Condition::Op::Outside;
-    if (!v.IsSequence() || v.size() != 2) throw LoadError(mark_of(v, file), op + ": expected [low, high]");
-    c.a = read_number(v[0], file, op);
-    c.b = read_number(v[1], file, op);
-    if (c.b < c.a) throw LoadError(mark_of(v, file), op + ": high is below low");
-  } else {
-    c.op = Condition::Op::Near;
-    c.a = read_number(v, file, "value");
-    const auto t = r.require("tolerance");
-    c.b = read_number(t, file, "tolerance", 0.0, 1e300);
-  }
-  return c;
-}
-
-/// Reads id / mask / data (/ extended) of a frame pattern from `r`.
-FramePattern read_pattern(MapReader& r, const std::string& file, const char* data_key) {
-  FramePattern p;
-  const auto id = r.require("id");
-  const auto v = read_integer(id, file, "id", 0, 0x1FFFFFFF);
-  p.id = static_cast<std::uint32_t>(v);
-  p.extended = v > 0x7FF;
-  if (auto e = r.get("extended")) p.extended = read_bool(e, file, "extended");
-  p.mask = p.extended ? 0x1FFFFFFF : 0x7FF;
-  if (auto m = r.get("mask")) p.mask = static_cast<std::uint32_t>(read_integer(m, file, "mask", 0, p.mask));
-  p.id &= p.mask;
-  if (data_key) {
-    if (auto d = r.get(data_key)) {
-      const auto err = parse_data_pattern(read_string(d, file, data_key), p);
-      if (!err.empty()) throw LoadError(mark_of(d, file), std::string(data_key) + ": " + err);
-    }
-  }
-  return p;
-}
-
 std::uint32_t read_abort(const YAML::Node& n, const std::string& file) {
   return static_cast<std::uint32_t>(read_integer(n, file, "expect_abort", 1, 0xFFFFFFFF));
 }
@@ -95,116 +54,6 @@ void read_sdo_target(MapReader& r, const std::string& file, SdoTarget& t) {
 
 std::string where(const SdoTarget& t) { return describe(t.node) + " " + hex(t.index, 4) + ":" + hex(t.sub, 2).substr(2); }
 
-FaultAction read_fault_action(MapReader& r, const std::string& file, std::string& summary) {
-  const auto kind = r.one_of({"drop", "delay", "corrupt", "tx_errors", "bus_off", "device_fault", "power_off",
-                              "power_on", "power_cycle", "reset", "plant"});
-  const auto v = r.get(kind);
-  if (kind == "tx_errors") {
-    MapReader wr(v, file, kind);
-    WireFault w;
-    w.kind = WireFault::Kind::TxError;
-    w.node = read_name(wr.require("node"), file, "node");
-    if (auto p = wr.get("probability")) w.probability = read_number(p, file, "probability", 0.0, 1.0);
-    if (auto c = wr.get("count")) w.count = static_cast<std::uint64_t>(read_integer(c, file, "count", 1, INT64_MAX));
-    wr.finish();
-    summary = "tx_errors " + w.node + (w.count ? " x" + std::to_string(w.count) : "");
-    return w;
-  }
-  if (kind == "drop" || kind == "delay" || kind == "corrupt") {
-    MapReader wr(v, file, kind);
-    WireFault w;
-    if (auto b = wr.get("bus")) w.bus = read_name(b, file, "bus");
-    w.match = read_pattern(wr, file, "data");
-    if (auto p = wr.get("probability")) w.probability = read_number(p, file, "probability", 0.0, 1.0);
-    if (auto c = wr.get("count")) w.count = static_cast<std::uint64_t>(read_integer(c, file, "count", 1, INT64_MAX));
-    summary = kind + " " + w.match.describe();
-    if (kind == "drop") {
-      w.kind = WireFault::Kind::Drop;
-    } else if (kind == "delay") {
-      w.kind = WireFault::Kind::Delay;
-      w.delay = read_duration(wr.require("by"), file, "by");
-      summary += " by " + format_value(sim::seconds(w.delay)) + " s";
-    } else {
-      w.kind = WireFault::Kind::Corrupt;
-      w.byte = static_cast<int>(read_integer(wr.require("byte"), file, "byte", 0, 7));
-      const auto how = wr.one_of({"xor", "value", "random"});
-      if (how == "xor") w.xor_mask = static_cast<std::uint8_t>(read_integer(wr.get("xor"), file, "xor", 1, 255));
-      if (how == "value") w.set_value = static_cast<std::uint8_t>(read_integer(wr.get("value"), file, "value", 0, 255));
-      if (how == "random") w.random_value = read_bool(wr.get("random"), file, "random");
-      summary += " byte " + std::to_string(w.byte);
-    }
-    wr.finish();
-    return w;
-  }
-  if (kind == "bus_off") {
-    BusOff b{read_name(v, file, "bus_off")};
-    summary = "bus_off " + b.node;
-    return b;
-  }
-  if (kind == "device_fault") {
-    MapReader dr(v, file, "device_fault");
-    DeviceFault d;
-    d.node = read_name(dr.require("node"), file, "node");
-    d.fault = read_name(dr.require("fault"), file, "fault");
-    if (auto a = dr.get("active")) d.active = read_bool(a, file, "active");
-    dr.finish();
-    summary = "device_fault " + d.node + " " + d.fault + (d.active ? " on" : " off");
-    return d;
-  }
-  if (kind == "plant") {
-    MapReader pr(v, file, "plant fault");
-    PlantParameter p;
-    p.name = read_string(pr.require("parameter"), file, "parameter");
-    p.value = read_number(pr.require("value"), file, "value");
-    pr.finish();
-    summary = "plant " + p.name + " = " + format_value(p.value);
-    return p;
-  }
-  Power p;
-  if (kind == "power_cycle" && v.IsMap()) {
-    MapReader pr(v, file, "power_cycle");
-    p.node = read_name(pr.require("node"), file, "node");
-    if (auto o = pr.get("off")) p.off_time = read_duration(o, file, "off");
-    pr.finish();
-  } else {
-    p.node = read_name(v, file, kind);
-  }
-  p.kind = kind == "power_off" ? Power::Kind::Off
-           : kind == "power_on" ? Power::Kind::On
-           : kind == "reset"    ? Power::Kind::Reset
-                                : Power::Kind::Cycle;
-  summary = kind + " " + p.node;
-  return p;
-}
-
-FaultSpec read_fault_body(MapReader& r, const std::string& file, bool scheduled) {
-  FaultSpec f;
-  f.mark = r.mark();
-  if (auto n = r.get("name")) f.name = read_string(n, file, "name");
-  if (scheduled) {
-    if (auto a = r.get("at")) f.at = read_duration(a, file, "at");
-    if (auto w = r.get("when")) {
-      MapReader wr(w, file, "when");
-      f.when = read_condition(wr, file);
-      wr.finish();
-    }
-    if (f.at.has_value() == f.when.has_value())
-      throw LoadError(f.mark, "fault: give exactly one of 'at' (a time) or 'when' (a condition)");
-  }
-  if (auto d = r.get("for")) {
-    f.duration = read_duration(d, file, "for");
-    if (f.duration->count() <= 0) throw LoadError(mark_of(d, file), "for: must be greater than zero");
-  }
-  f.action = read_fault_action(r, file, f.summary);
-  if (f.duration) {
-    if (const auto* p = std::get_if<Power>(&f.action); p && p->kind != Power::Kind::Off)
-      throw LoadError(r.key_mark("for"), "for: only power_off can be timed (power_cycle has 'off')");
-  }
-  r.finish();
-  if (f.name.empty()) f.name = f.summary;
-  return f;
-}
-
 StepAction read_action(const std::string& kind, const YAML::Node& v, const std::string& file, std::string& summary,
                        MapReader& step) {
   if (kind == "nmt") {
@@ -218,12 +67,9 @@ StepAction read_action(const std::string& kind, const YAML::Node& v, const std::
     } else {
       cmd = read_string(v, file, "nmt");
     }
-    if (cmd == "start") s.command = canopen::NmtCommand::Start;
-    else if (cmd == "stop") s.command = canopen::NmtCommand::Stop;
-    else if (cmd == "pre_operational") s.command = canopen::NmtCommand::EnterPreOperational;
-    else if (cmd == "reset_node") s.command = canopen::NmtCommand::ResetNode;
-    else if (cmd == "reset_communication") s.command = canopen::NmtCommand::ResetCommunication;
-    else throw LoadError(mark_of(v, file), "nmt: '" + cmd + "' is not start, stop, pre_operational, reset_node or reset_communication");
+    const auto command = canopen::parse_nmt_command(cmd);
+    if (!command) throw LoadError(mark_of(v, file), "nmt: '" + cmd + "' is not " + std::string(canopen::kNmtCommandWords));
+    s.command = *command;
     summary = "nmt " + cmd + " " + describe(s.node);
     return s;
   }
@@ -416,8 +262,7 @@ StepAction read_action(const std::string& kind, const YAML::Node& v, const std::
     return s;
   }
   if (kind == "fault") {
-    MapReader r(v, file, "fault");
-    FaultStep s{read_fault_body(r, file, false)};
+    FaultStep s{read_fault(v, file, FaultTiming::Now)};
     summary = "fault " + s.fault.summary;
     return s;
   }
@@ -428,6 +273,50 @@ StepAction read_action(const std::string& kind, const YAML::Node& v, const std::
 }
 
 }  // namespace
+
+Condition read_condition(MapReader& r, const std::string& file) {
+  Condition c;
+  const auto s = r.require("signal");
+  c.signal = parse_signal(read_string(s, file, "signal"), mark_of(s, file));
+  const auto op = r.one_of({"above", "below", "between", "outside", "value"});
+  const auto v = r.get(op);
+  if (op == "above" || op == "below") {
+    c.op = op == "above" ? Condition::Op::Above : Condition::Op::Below;
+    c.a = read_number(v, file, op);
+  } else if (op == "between" || op == "outside") {
+    c.op = op == "between" ? Condition::Op::Between : Condition::Op::Outside;
+    if (!v.IsSequence() || v.size() != 2) throw LoadError(mark_of(v, file), op + ": expected [low, high]");
+    c.a = read_number(v[0], file, op);
+    c.b = read_number(v[1], file, op);
+    if (c.b < c.a) throw LoadError(mark_of(v, file), op + ": high is below low");
+  } else {
+    c.op = Condition::Op::Near;
+    c.a = read_number(v, file, "value");
+    const auto t = r.require("tolerance");
+    c.b = read_number(t, file, "tolerance", 0.0, 1e300);
+  }
+  return c;
+}
+
+/// Reads id / mask / data (/ extended) of a frame pattern from `r`.
+FramePattern read_pattern(MapReader& r, const std::string& file, const char* data_key) {
+  FramePattern p;
+  const auto id = r.require("id");
+  const auto v = read_integer(id, file, "id", 0, 0x1FFFFFFF);
+  p.id = static_cast<std::uint32_t>(v);
+  p.extended = v > 0x7FF;
+  if (auto e = r.get("extended")) p.extended = read_bool(e, file, "extended");
+  p.mask = p.extended ? 0x1FFFFFFF : 0x7FF;
+  if (auto m = r.get("mask")) p.mask = static_cast<std::uint32_t>(read_integer(m, file, "mask", 0, p.mask));
+  p.id &= p.mask;
+  if (data_key) {
+    if (auto d = r.get(data_key)) {
+      const auto err = parse_data_pattern(read_string(d, file, data_key), p);
+      if (!err.empty()) throw LoadError(mark_of(d, file), std::string(data_key) + ": " + err);
+    }
+  }
+  return p;
+}
 
 void parse_object_address(const std::string& text, const SourceMark& mark, std::uint16_t& index, std::uint8_t& sub) {
   const auto colon = text.find(':');
@@ -465,10 +354,7 @@ std::vector<Step> read_script(const YAML::Node& seq, const std::string& file) {
 std::vector<FaultSpec> read_faults(const YAML::Node& seq, const std::string& file) {
   if (!seq.IsSequence()) throw LoadError(mark_of(seq, file), "faults: expected a list of faults");
   std::vector<FaultSpec> faults;
-  for (const auto& item : seq) {
-    MapReader r(item, file, "fault");
-    faults.push_back(read_fault_body(r, file, true));
-  }
+  for (const auto& item : seq) faults.push_back(read_fault(item, file, FaultTiming::Scheduled));
   return faults;
 }
 

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "devices/canopen/nmt_command.h"
 #include "devices/canopen/sdo_abort.h"
 
 namespace canopen {
@@ -324,11 +325,11 @@ std::string_view nmt_state_text(std::uint8_t state) {
 
 std::string_view nmt_command_text(std::uint8_t command) {
   switch (command) {
-    case 0x01: return "start";
-    case 0x02: return "stop";
-    case 0x80: return "enter pre-operational";
-    case 0x81: return "reset node";
-    case 0x82: return "reset communication";
+    case 0x01:
+    case 0x02:
+    case 0x80:
+    case 0x81:
+    case 0x82: return to_string(static_cast<NmtCommand>(command));
     default: return "unknown command";
   }
 }

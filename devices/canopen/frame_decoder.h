@@ -65,7 +65,8 @@ std::string_view emcy_code_text(std::uint16_t code);
 std::string error_register_text(std::uint8_t reg);
 /// NMT state byte of heartbeat/guarding (without the toggle bit): "BOOT-UP", "STOPPED", ...
 std::string_view nmt_state_text(std::uint8_t state);
-/// NMT command specifier: "start", "stop", "enter pre-operational", "reset node", "reset communication".
+/// NMT command specifier, by its word (nmt_state.h): "start", "stop", "pre_operational",
+/// "reset_node", "reset_communication"; else "unknown command".
 std::string_view nmt_command_text(std::uint8_t command);
 
 }  // namespace canopen

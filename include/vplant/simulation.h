@@ -104,7 +104,8 @@ class Simulation {
   void set_input(const std::string& node, const std::string& input, double value);
   /// Applies a fault now, written as a step of a scenario's script would write it
   /// (docs/scenarios.md, "Faults"), e.g. `{device_fault: {node: hlt, fault: magnet_lost}, for: 200ms}`
-  /// or `{drop: {id: 0x285}}`. Throws Error (`<fault>:line:col: reason`).
+  /// or `{drop: {id: 0x285}}`; JSON too, as the HTTP API's POST /api/faults takes it. Throws Error
+  /// (`<fault>:line:col: reason`) for a malformed fault and for one its node or plant refuses.
   void inject_fault(const std::string& yaml);
 
   /// Every frame delivered so far, in order (Options::record_trace).

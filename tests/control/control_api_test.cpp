@@ -220,7 +220,7 @@ TEST_F(ControlApi, ObjectDictionaryListsEntriesWithValues) {
 
 TEST_F(ControlApi, NmtCommandsAndRawFrames) {
   start_all();
-  ASSERT_EQ(status(p().post("/api/nmt", {{"command", "preop"}, {"node", "wdga"}})), 200);
+  ASSERT_EQ(status(p().post("/api/nmt", {{"command", "pre_operational"}, {"node", "wdga"}})), 200);
   p().run_ms(5);
   EXPECT_EQ(node("wdga")["nmt"], "PRE-OPERATIONAL");
   EXPECT_EQ(node("hlt")["nmt"], "OPERATIONAL");
@@ -228,7 +228,17 @@ TEST_F(ControlApi, NmtCommandsAndRawFrames) {
   ASSERT_EQ(status(p().post("/api/frames", {{"bus", "main"}, {"id", "0x000"}, {"data", "017F"}})), 200);
   p().run_ms(5);
   EXPECT_EQ(node("wdga")["nmt"], "OPERATIONAL");
+  // reset_communication: back to pre-operational after its boot-up.
+  ASSERT_EQ(status(p().post("/api/nmt", {{"command", "reset_communication"}, {"node", "wdga"}})), 200);
+  p().run_ms(20);
+  EXPECT_EQ(node("wdga")["nmt"], "PRE-OPERATIONAL");
+  ASSERT_EQ(status(p().post("/api/nmt", {{"command", "start"}, {"node", "wdga"}})), 200);
+  p().run_ms(5);
+  EXPECT_EQ(node("wdga")["nmt"], "OPERATIONAL");
   EXPECT_EQ(status(p().post("/api/nmt", {{"command", "dance"}, {"node", 0}})), 400);
+  // The old words are gone: one vocabulary.
+  EXPECT_EQ(status(p().post("/api/nmt", {{"command", "preop"}, {"node", 0}})), 400);
+  EXPECT_EQ(status(p().post("/api/nmt", {{"command", "reset_comm"}, {"node", 0}})), 400);
   EXPECT_EQ(status(p().post("/api/nmt", {{"command", "start"}, {"node", "ghost"}})), 404);
   EXPECT_EQ(status(p().post("/api/nmt", {{"command", "start"}, {"node", 5}})), 400);
   EXPECT_EQ(status(p().post("/api/frames", {{"id", 0x800}, {"data", "00"}})), 400);
@@ -239,7 +249,7 @@ TEST_F(ControlApi, NmtCommandsAndRawFrames) {
 TEST_F(ControlApi, DeviceFaultInjectedAndClearedWithItsEmcy) {
   start_all();
   const auto before = node("hlt")["emcy"].size();
-  auto r = LivePlant::json_of(p().post("/api/faults", {{"kind", "device"}, {"node", "hlt"}, {"fault", "magnet_lost"}}));
+  auto r = LivePlant::json_of(p().post("/api/faults", {{"device_fault", {{"node", "hlt"}, {"fault", "magnet_lost"}}}}));
   ASSERT_EQ(r["ok"], true) << r.dump();
   EXPECT_EQ(r["active"], true);
   const int id = r["id"];
@@ -267,11 +277,12 @@ TEST_F(ControlApi, EveryFaultKind) {
     EXPECT_EQ(status(r), 200) << body.dump() << " → " << (r ? r->body : "");
     return r ? LivePlant::json_of(r) : json{};
   };
-  // Wire: drop the HLT's TPDO2; bus-off; power off; a plant parameter. Each one cleared.
-  for (const auto& body : {json{{"kind", "wire"}, {"bus", "main"}, {"match", "0x285"}, {"action", "drop"}},
-                           json{{"kind", "bus_off"}, {"node", "md2"}},
-                           json{{"kind", "power"}, {"node", "wdga"}, {"action", "off"}},
-                           json{{"kind", "plant"}, {"name", "cyl.viscous_friction"}, {"value", 3000.0}}}) {
+  // The scenario's fault actions as JSON (engine/fault_codec.h): drop the HLT's TPDO2; bus-off;
+  // power off; a plant parameter. Each one cleared.
+  for (const auto& body : {json{{"drop", {{"bus", "main"}, {"id", "0x285"}}}},
+                           json{{"bus_off", "md2"}},
+                           json{{"power_off", "wdga"}},
+                           json{{"plant", {{"parameter", "cyl.viscous_friction"}, {"value", 3000.0}}}}}) {
     const auto r = inject(body);
     ASSERT_EQ(r["active"], true) << body.dump();
     p().run_ms(5);
@@ -280,14 +291,28 @@ TEST_F(ControlApi, EveryFaultKind) {
   p().run_ms(5);
   EXPECT_TRUE(get("/api/faults").empty());
   // Power reset: nothing to clear.
-  EXPECT_EQ(inject({{"kind", "power"}, {"node", "wdga"}, {"action", "reset"}})["active"], false);
-  // Refusals: nothing applied.
-  EXPECT_EQ(status(p().post("/api/faults", {{"kind", "device"}, {"node", "hlt"}, {"fault", "gremlins"}})), 400);
-  EXPECT_EQ(status(p().post("/api/faults", {{"kind", "device"}, {"node", "ghost"}, {"fault", "magnet_lost"}})), 404);
-  EXPECT_EQ(status(p().post("/api/faults", {{"kind", "plant"}, {"name", "cyl.nonsense"}, {"value", 1}})), 400);
-  EXPECT_EQ(status(p().post("/api/faults", {{"kind", "plant"}, {"name", "cyl.viscous_friction"}, {"value", -5}})), 400);
-  EXPECT_EQ(status(p().post("/api/faults", {{"kind", "wire"}, {"match", "0x181"}, {"action", "melt"}})), 400);
-  EXPECT_EQ(status(p().post("/api/faults", {{"kind", "meteor"}})), 400);
+  EXPECT_EQ(inject({{"reset", "wdga"}})["active"], false);
+  // With `for:`: listed until it ends, then gone (the fault injector ended it).
+  const auto timed = inject({{"tx_errors", {{"node", "dsv"}, {"count", 3}}}, {"for", "20ms"}});
+  ASSERT_EQ(timed["active"], true);
+  auto listed = get("/api/faults");
+  ASSERT_EQ(listed.size(), 1u);
+  EXPECT_EQ(listed[0]["id"], timed["id"]);
+  EXPECT_EQ(listed[0]["until_t_us"].get<std::int64_t>() - listed[0]["since_t_us"].get<std::int64_t>(), 20000);
+  p().run_ms(25);
+  EXPECT_TRUE(get("/api/faults").empty());
+  EXPECT_EQ(status(p().http().Delete(("/api/faults/" + std::to_string(timed["id"].get<int>())).c_str())), 404);
+  // Refusals: nothing applied, the reason as `<body>:line:col: reason`.
+  const auto refused = p().post("/api/faults", {{"device_fault", {{"node", "hlt"}, {"fault", "gremlins"}}}});
+  EXPECT_EQ(status(refused), 400);
+  EXPECT_EQ(LivePlant::json_of(refused)["error"].get<std::string>().rfind("<body>:1:1: fault: node 'hlt'", 0), 0u)
+      << refused->body;
+  EXPECT_EQ(status(p().post("/api/faults", {{"device_fault", {{"node", "ghost"}, {"fault", "magnet_lost"}}}})), 400);
+  EXPECT_EQ(status(p().post("/api/faults", {{"plant", {{"parameter", "cyl.nonsense"}, {"value", 1}}}})), 400);
+  EXPECT_EQ(status(p().post("/api/faults", {{"plant", {{"parameter", "cyl.viscous_friction"}, {"value", -5}}}})), 400);
+  EXPECT_EQ(status(p().post("/api/faults", {{"melt", {{"id", "0x181"}}}})), 400);
+  EXPECT_EQ(status(p().post("/api/faults", {{"kind", "device"}, {"node", "hlt"}, {"fault", "magnet_lost"}})), 400);
+  EXPECT_EQ(status(p().http().Post("/api/faults", "{\"drop\": [", "application/json")), 400);
   EXPECT_TRUE(get("/api/faults").empty());
 }
 

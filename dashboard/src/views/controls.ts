@@ -1,13 +1,13 @@
-// NMT commands (to one node or all) and, in virtual time, the clock: pause, resume, one tick, run N ms.
+// NMT commands (to one node or all; the words of every front door: devices/canopen/nmt_command.h) and, in virtual time, the clock: pause, resume, one tick, run N ms.
 import { button, el, formatTime } from '../dom';
 import type { ClockState, ScenarioNode } from '../types';
 
 export const NMT_COMMANDS = [
   { command: 'start', label: 'Start' },
   { command: 'stop', label: 'Stop' },
-  { command: 'preop', label: 'Pre-operational' },
+  { command: 'pre_operational', label: 'Pre-operational' },
   { command: 'reset_node', label: 'Reset node' },
-  { command: 'reset_comm', label: 'Reset communication' },
+  { command: 'reset_communication', label: 'Reset communication' },
 ] as const;
 
 export function renderNmtControls(host: HTMLElement, nodes: readonly ScenarioNode[], send: (command: string, node: string | 0) => void): void {

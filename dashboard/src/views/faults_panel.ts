@@ -1,6 +1,7 @@
 // Fault injection (from the scenario's fault catalogue: device, power, bus-off, plant, wire) with the
 // list of active faults and their Clear buttons, and the device inputs (set_input).
 import { button, el, formatTime } from '../dom';
+import { busOffFault, deviceFault, plantFault, powerFault, wireFault } from '../fault_requests';
 import type { ActiveFault, Scenario } from '../types';
 
 export interface FaultActions {
@@ -27,7 +28,7 @@ export class FaultsPanel {
       devTable.append(el('tr', {},
         el('td', {}, f.node), el('td', { class: 'mono' }, f.name), el('td', {}, f.description),
         el('td', {}, button('Inject', { 'data-testid': `fault-inject-${f.node}-${f.name}`, 'aria-label': `Inject ${f.name} on ${f.node}` },
-          () => actions.inject({ kind: 'device', node: f.node, fault: f.name })))));
+          () => actions.inject(deviceFault(f.node, f.name))))));
     }
     parts.push(el('div', { class: 'fault-scroll' }, devTable));
 
@@ -36,19 +37,19 @@ export class FaultsPanel {
       const node = select('Node to power', 'power-node', nodeNames);
       const action = select('Power action', 'power-action', sc.faults.power);
       parts.push(el('div', { class: 'fault-row' }, el('span', {}, 'Power: '), node, action,
-        button('Apply', { 'data-testid': 'power-apply' }, () => actions.inject({ kind: 'power', node: node.value, action: action.value }))));
+        button('Apply', { 'data-testid': 'power-apply' }, () => actions.inject(powerFault(action.value, node.value)))));
     }
     if (sc.faults.bus_off.length) {
       const node = select('Node to put bus-off', 'busoff-node', sc.faults.bus_off);
       parts.push(el('div', { class: 'fault-row' }, el('span', {}, 'Bus-off: '), node,
-        button('Inject', { 'data-testid': 'busoff-inject' }, () => actions.inject({ kind: 'bus_off', node: node.value }))));
+        button('Inject', { 'data-testid': 'busoff-inject' }, () => actions.inject(busOffFault(node.value)))));
     }
     if (sc.faults.wire.length && sc.buses.length) {
       const bus = select('Bus', 'wire-bus', sc.buses.map((b) => b.name));
       const match = el('input', { type: 'text', size: 7, value: '0x181', 'aria-label': 'COB-ID to match', 'data-testid': 'wire-match' });
       const action = select('Wire action', 'wire-action', sc.faults.wire);
       parts.push(el('div', { class: 'fault-row' }, el('span', {}, 'Wire: '), bus, match, action,
-        button('Inject', { 'data-testid': 'wire-inject' }, () => actions.inject({ kind: 'wire', bus: bus.value, match: match.value.trim(), action: action.value }))));
+        button('Inject', { 'data-testid': 'wire-inject' }, () => actions.inject(wireFault(action.value, bus.value, match.value.trim())))));
     }
     if (sc.faults.plant.length) {
       const name = select('Plant parameter', 'plant-name', sc.faults.plant);
@@ -57,7 +58,7 @@ export class FaultsPanel {
         button('Apply', { 'data-testid': 'plant-apply' }, () => {
           const v = Number(value.value);
           if (value.value.trim() === '' || !Number.isFinite(v)) actions.reportError('plant fault: give a number');
-          else actions.inject({ kind: 'plant', name: name.value, value: v });
+          else actions.inject(plantFault(name.value, v));
         })));
     }
 

@@ -53,8 +53,8 @@ TEST(FrameDecoder, NmtCommandAndTarget) {
   EXPECT_EQ(d.service, Service::Nmt);
   EXPECT_EQ(d.node, 2);
   EXPECT_EQ(d.text, "NMT start → node 2");
-  EXPECT_EQ(decode(0x000, {0x82, 0x00}).text, "NMT reset communication → all nodes");
-  EXPECT_EQ(decode(0x000, {0x80, 0x05}).text, "NMT enter pre-operational → node 5");
+  EXPECT_EQ(decode(0x000, {0x82, 0x00}).text, "NMT reset_communication → all nodes");
+  EXPECT_EQ(decode(0x000, {0x80, 0x05}).text, "NMT pre_operational → node 5");
   EXPECT_EQ(decode(0x000, {0x81}).text, "NMT (short frame)");
 }
 
