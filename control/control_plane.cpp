@@ -33,6 +33,7 @@ namespace {
 
 constexpr std::size_t kMaxBody = 64 * 1024;
 constexpr unsigned kMaxConnectionsPerAddress = 64;
+constexpr std::size_t kMaxLiveFaults = 256;
 constexpr auto kCommandTimeout = std::chrono::milliseconds(2000);
 constexpr auto kSdoWait = std::chrono::milliseconds(5000);
 
@@ -271,6 +272,14 @@ struct ControlPlane::Server {
     return node_json(node_names[i], bus_names[static_cast<std::size_t>(node_bus[i])], nodes[i]);
   }
 
+  /// Active faults are a client-growable table: bounded (each wire fault is a rule every frame
+  /// on its bus is checked against).
+  void refuse_at_fault_bound() {
+    const auto active = call<std::size_t>([this](const scenario::RunContext&) { return cp.bridge_.live_faults().size(); });
+    if (active >= kMaxLiveFaults)
+      throw HttpError{429, "too many active faults (at most " + std::to_string(kMaxLiveFaults) + "): clear some first"};
+  }
+
   // ---- routes ---------------------------------------------------------------------------------
   using Handler = std::function<void(const http::Request&, http::Response&)>;
   Handler guarded(Handler h) {
@@ -375,7 +384,10 @@ struct ControlPlane::Server {
     router.add("POST", R"(/api/nodes/([^/]+)/inputs)", guarded([this](const http::Request& req, http::Response& res) { set_input(req, res); }));
     router.add("POST", "/api/nmt", guarded([this](const http::Request& req, http::Response& res) { nmt(req, res); }));
     router.add("POST", "/api/frames", guarded([this](const http::Request& req, http::Response& res) { send_frame(req, res); }));
-    router.add("POST", "/api/faults", guarded([this](const http::Request& req, http::Response& res) { inject(req, res); }));
+    router.add("POST", "/api/faults", guarded([this](const http::Request& req, http::Response& res) {
+      refuse_at_fault_bound();
+      inject(req, res);
+    }));
     router.add("GET", "/api/faults", guarded([this](const http::Request& req, http::Response& res) { list_faults(req, res); }));
     router.add("DELETE", R"(/api/faults/([^/]+))", guarded([this](const http::Request& req, http::Response& res) { clear_fault(req, res); }));
     router.add("GET", "/api/signals", guarded([this](const http::Request& req, http::Response& res) { signals(req, res); }));

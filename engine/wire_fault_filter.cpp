@@ -1,23 +1,37 @@
 #include "engine/wire_fault_filter.h"
 
+#include <algorithm>
+
 namespace scenario {
 
 int WireFaultFilter::add(const WireFault& fault) {
-  rules_.push_back(Rule{fault, true, 0});
-  return static_cast<int>(rules_.size()) - 1;
+  rules_.push_back(Rule{fault, next_handle_, 0});
+  return next_handle_++;
 }
 
 void WireFaultFilter::remove(int handle) {
-  if (handle >= 0 && handle < static_cast<int>(rules_.size())) rules_[static_cast<std::size_t>(handle)].active = false;
+  const auto it = std::find_if(rules_.begin(), rules_.end(), [handle](const Rule& r) { return r.handle == handle; });
+  if (it != rules_.end()) rules_.erase(it);
+}
+
+std::size_t WireFaultFilter::active() const {
+  return static_cast<std::size_t>(std::count_if(rules_.begin(), rules_.end(), [](const Rule& r) { return !r.spent(); }));
+}
+
+void WireFaultFilter::free_spent() {
+  std::erase_if(rules_, [](const Rule& r) { return r.spent(); });
+  spent_ = false;
 }
 
 sim::FrameFilter::Verdict WireFaultFilter::on_send(sim::CanFrame& frame, int, sim::Time) {
   Verdict v;
+  if (spent_) free_spent();
   for (auto& r : rules_) {
-    if (!r.active || r.fault.kind == WireFault::Kind::TxError || !r.fault.match.matches(frame)) continue;
-    if (r.fault.count != 0 && r.affected >= r.fault.count) continue;
+    if (r.fault.kind == WireFault::Kind::TxError || !r.fault.match.matches(frame)) continue;
+    if (r.spent()) continue;
     if (r.fault.probability < 1.0 && random_->uniform() >= r.fault.probability) continue;
     ++r.affected;
+    spent_ |= r.spent();
     switch (r.fault.kind) {
       case WireFault::Kind::Drop:
         v.drop = true;
@@ -41,11 +55,13 @@ sim::FrameFilter::Verdict WireFaultFilter::on_send(sim::CanFrame& frame, int, si
 
 bool WireFaultFilter::on_transmit(const sim::CanFrame&, int from_endpoint, sim::Time) {
   bool destroyed = false;
+  if (spent_) free_spent();
   for (auto& r : rules_) {
-    if (!r.active || r.fault.kind != WireFault::Kind::TxError || r.fault.endpoint != from_endpoint) continue;
-    if (r.fault.count != 0 && r.affected >= r.fault.count) continue;
+    if (r.fault.kind != WireFault::Kind::TxError || r.fault.endpoint != from_endpoint) continue;
+    if (r.spent()) continue;
     if (r.fault.probability < 1.0 && random_->uniform() >= r.fault.probability) continue;
     ++r.affected;
+    spent_ |= r.spent();
     destroyed = true;
   }
   return destroyed;

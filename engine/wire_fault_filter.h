@@ -19,8 +19,11 @@ class WireFaultFilter final : public sim::FrameFilter {
 
   /// Activates a rule; returns its handle for remove().
   int add(const WireFault& fault);
+  /// Frees the rule (a handle already removed, or whose count ran out, is ignored).
   void remove(int handle);
-  std::uint64_t affected(int handle) const { return rules_[static_cast<std::size_t>(handle)].affected; }
+  /// Rules still in force: a removed rule, or one whose count ran out, is freed, so the cost per
+  /// frame depends on these only, never on the rules a long run has ended.
+  std::size_t active() const;
 
   Verdict on_send(sim::CanFrame& frame, int from_endpoint, sim::Time now) override;
   /// tx_errors rules: a bit error destroys this transmission attempt of the rule's node.
@@ -29,10 +32,15 @@ class WireFaultFilter final : public sim::FrameFilter {
  private:
   struct Rule {
     WireFault fault;
-    bool active = false;
+    int handle = 0;
     std::uint64_t affected = 0;
+    bool spent() const { return fault.count != 0 && affected >= fault.count; }
   };
-  std::vector<Rule> rules_;
+  void free_spent();
+
+  std::vector<Rule> rules_;  ///< in force, in the order they were added (the order they apply in)
+  int next_handle_ = 0;
+  bool spent_ = false;  ///< a rule's count ran out: freed at the next frame
   Random* random_;
 };
 

@@ -118,6 +118,22 @@ TEST_F(ControlLimits, FramesTheBusRefusesAreReportedAsRefused) {
   EXPECT_EQ(p().post("/api/frames", {{"id", 0x7E5}, {"data", "01"}})->status, 200);
 }
 
+TEST_F(ControlLimits, ActiveFaultsAreBounded) {
+  std::vector<int> ids;
+  int status = 200;
+  for (int i = 0; i < 300 && status == 200; ++i) {
+    const auto r = p().post("/api/faults", {{"kind", "wire"}, {"match", 0x7E0}, {"action", "drop"}});
+    ASSERT_TRUE(r);
+    status = r->status;
+    if (status == 200) ids.push_back(json::parse(r->body)["id"].get<int>());
+    else EXPECT_NE(json::parse(r->body)["error"].get<std::string>().find("too many active faults"), std::string::npos);
+  }
+  EXPECT_EQ(status, 429);
+  EXPECT_EQ(ids.size(), 256u);
+  for (const int id : ids) EXPECT_EQ(p().http().Delete(("/api/faults/" + std::to_string(id)).c_str())->status, 200);
+  EXPECT_TRUE(LivePlant::json_of(p().http().Get("/api/faults")).empty());
+}
+
 TEST(ControlStop, ARunStopsPromptlyAtTheSlowestSpeed) {
   LivePlant p(reference_plant(), scenario::default_environment());
   // 0.001 × wall clock: one 1 ms tick takes a wall second.
