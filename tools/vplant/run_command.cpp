@@ -33,6 +33,7 @@ struct RunArgs {
   bool ui_run = false;
   double ui_speed = -1;
   bool strict = false;
+  bool rt = false;
 };
 
 bool stop_active_run() {
@@ -68,6 +69,7 @@ int run(const RunArgs& a) {
   o.junit = a.junit;
   o.quiet = a.quiet;
   o.strict_eds = a.strict;
+  o.rt = a.rt;
   o.progress = !a.quiet && ::isatty(STDERR_FILENO);
   // The control plane: --ui overrides the scenario's `ui:`; made once the scenario is loaded.
   std::unique_ptr<control::ControlPlane> ui;
@@ -115,6 +117,9 @@ Runner add_run_command(CLI::App& app) {
   app.add_flag("--ui-run", a->ui_run, "virtual time with --ui: start running instead of paused");
   app.add_option("--ui-speed", a->ui_speed, "virtual time with --ui: × wall clock while running (0 = as fast as possible; default 1)")
       ->check(CLI::Range(0.0, 1000.0));
+  app.add_flag("--rt", a->rt,
+               "real time: run the scheduler's thread SCHED_FIFO (priority 49) with memory locked, where permitted "
+               "(docs/runtime.md, \"Real-time priority\")");
   app.add_flag("--strict", a->strict, "EDS nodes: reject the CiA 306 deviations that are otherwise loaded with a warning");
   return [a] { return run(*a); };
 }
