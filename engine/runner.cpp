@@ -5,6 +5,7 @@
 #include <ctime>
 #include <filesystem>
 
+#include "sim/realtime_setup.h"
 #include "sim/scheduler.h"
 #include "sim/trace_writer.h"
 #include "engine/bus_report.h"
@@ -144,6 +145,13 @@ int Runner::run() {
     std::fflush(m.options.out);
   }
 
+  // --rt: on this thread (the scheduler's), after the extension started its own threads.
+  if (m.options.rt) {
+    std::string note = realtime ? sim::enter_realtime().message : "real time: --rt ignored: the run is in virtual time";
+    for (auto at = note.find('\n'); at != std::string::npos; at = note.find('\n', at + 1)) note.insert(at + 1, "vplant run: ");
+    if (!m.options.quiet) std::fprintf(m.options.out, "vplant run: %s\n", note.c_str());
+  }
+
   const double wall_start = wall_now();
   double next_progress = wall_start + 0.5;
   bool progress_shown = false;
@@ -190,6 +198,8 @@ int Runner::run() {
   s.realtime = realtime;
   s.overruns = sched.stats().overruns;
   s.max_lateness_us = sched.stats().max_lateness.count();
+  s.reanchors = sched.stats().reanchors;
+  s.slipped_us = sched.stats().slipped.count();
   for (std::size_t i = 0; i < m.world->buses().size(); ++i) {
     const auto& bus = *m.world->buses()[i];
     s.buses.push_back({bus.name(), bus.transport() ? std::string(bus.transport()->name()) : "virtual", bus.stats().frames,
@@ -233,6 +243,9 @@ int Runner::run() {
     if (realtime)
       std::fprintf(out, ", overruns: %llu, worst tick lateness: %lld us", static_cast<unsigned long long>(s.overruns),
                    static_cast<long long>(s.max_lateness_us));
+    if (s.reanchors)
+      std::fprintf(out, " (schedule re-anchored %llu times: simulated time %.1f ms behind the wall clock)",
+                   static_cast<unsigned long long>(s.reanchors), static_cast<double>(s.slipped_us) / 1000.0);
     std::fprintf(out, "\n  assertions: %zu passed, %zu failed\n", s.assertions - s.failures, s.failures);
     if (m.trace) std::fprintf(out, "  trace: %s\n", m.trace_path.c_str());
     if (!m.csv_path.empty()) std::fprintf(out, "  csv: %s (%zu rows)\n", m.csv_path.c_str(), m.recorder->rows());

@@ -38,6 +38,7 @@ struct RunOptions {
   bool progress = false;                   ///< progress line on stderr (a terminal)
   bool quiet = false;                      ///< no summary (tests, benchmarks)
   bool strict_eds = false;                 ///< --strict: EDS nodes reject CiA 306 deviations
+  bool rt = false;                         ///< --rt: SCHED_FIFO + locked memory for the scheduler's thread (sim/realtime_setup.h)
   std::FILE* out = stderr;                 ///< summary, failures, log lines
   /// run_scenario_file: only this case of the file's matrix (`vplant run --case`); "" = all.
   std::string case_name;
@@ -56,6 +57,8 @@ struct RunSummary {
   bool realtime = false;
   std::uint64_t overruns = 0;
   std::int64_t max_lateness_us = 0;
+  std::uint64_t reanchors = 0;   ///< overruns after which the schedule was re-anchored (sim/scheduler.h)
+  std::int64_t slipped_us = 0;   ///< how far simulated time lags the wall clock after them
   struct BusFrames {
     std::string name, wire;
     std::uint64_t frames = 0;

@@ -74,8 +74,15 @@ void Scheduler::run(std::uint64_t max_ticks) {
     const std::int64_t late_ns = monotonic_ns() - deadline;
     const Duration late{late_ns / 1000};
     if (late > stats_.max_lateness) stats_.max_lateness = late;
-    if (late_ns > tick_ns) ++stats_.overruns;
     if (lateness_observer_) lateness_observer_(late);
+    if (late_ns > tick_ns) {
+      // Catch-up policy (scheduler.h): this tick starts the schedule anew; the missed ticks are
+      // not run back to back, simulated time pauses for the stall.
+      ++stats_.overruns;
+      ++stats_.reanchors;
+      rt_start_ns_ += late_ns;
+      stats_.slipped += late;
+    }
     run_tick();
   }
 }

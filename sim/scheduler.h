@@ -5,6 +5,14 @@
 // Virtual time runs ticks back to back (deterministic, as fast as possible). Real time paces
 // ticks by absolute deadlines on CLOCK_MONOTONIC; between ticks it waits in ppoll() on the
 // transports' sockets, so a received frame is handled when it arrives, not at the next tick.
+//
+// Catch-up policy (real time): a tick that starts more than one tick late (an overrun: the
+// machine stalled the process) re-anchors the schedule at that moment instead of running the
+// missed ticks back to back. Simulated time does not jump: it pauses for the stall and from then
+// on lags the wall clock by the time lost (SchedulerStats::slipped), so every period the nodes
+// keep in simulated time (heartbeats, SYNC, event timers) stays one period apart on the wire too,
+// except the one period the stall itself stretched. A late start within one tick is absorbed by
+// the absolute deadlines as before.
 #pragma once
 
 #include <poll.h>
@@ -34,6 +42,8 @@ struct SchedulerStats {
   std::uint64_t overruns = 0;        ///< real time: ticks that started after the next deadline
   Duration max_lateness{0};          ///< real time: worst tick start after its deadline
   std::uint64_t frames_between_ticks = 0;  ///< real time: frames handled on arrival
+  std::uint64_t reanchors = 0;       ///< real time: overruns after which the schedule was re-anchored
+  Duration slipped{0};               ///< real time: how far simulated time lags the wall clock (stalls)
 };
 
 class Scheduler {

@@ -124,6 +124,49 @@ TEST(Scheduler, RealTimeCountsOverrunsAndLateness) {
   EXPECT_EQ(s.stats().ticks, 10u);
 }
 
+namespace {
+// The CLOCK_MONOTONIC time at which each tick ran.
+struct TickTimes : sim::Steppable {
+  std::vector<double> ms;
+  void step(Time, Duration) override {
+    timespec t{};
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    ms.push_back(static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) / 1e6);
+  }
+};
+}  // namespace
+
+TEST(Scheduler, RealTimeReanchorsAfterAStallInsteadOfBursting) {
+  // A 6 ms stall in tick 3 of 1 ms ticks. The missed ticks are not run back to back: tick 4
+  // starts the schedule anew, so ticks 5..11 wait for deadlines 1..7 ms after it (a loaded machine
+  // can only make them later; caught up, ticks 4..9 would run back to back and tick 11 would come
+  // about 2 ms after tick 4), and simulated time pauses for the stall instead of jumping.
+  sim::Scheduler s(sim::milliseconds(1), sim::ClockMode::RealTime);
+  Stall stall;
+  stall.stall_at = 3;
+  stall.length = std::chrono::milliseconds(6);
+  TickTimes times;
+  s.add(&stall);
+  s.add(&times);
+  s.run_ticks(12);
+  ASSERT_EQ(times.ms.size(), 12u);
+  EXPECT_GE(times.ms[11] - times.ms[4], 6.9);
+  EXPECT_GE(s.stats().reanchors, 1u);
+  EXPECT_GE(s.stats().slipped, sim::milliseconds(5));
+  EXPECT_EQ(s.now(), Time{sim::milliseconds(12)});
+}
+
+TEST(Scheduler, VirtualTimeNeverReanchors) {
+  sim::Scheduler s(sim::milliseconds(1), sim::ClockMode::Virtual);
+  Stall stall;
+  stall.length = std::chrono::milliseconds(3);
+  s.add(&stall);
+  s.run_ticks(5);
+  EXPECT_EQ(s.stats().reanchors, 0u);
+  EXPECT_EQ(s.stats().slipped, Duration{0});
+  EXPECT_EQ(s.stats().overruns, 0u);
+}
+
 TEST(Scheduler, RealTimeHandlesAFrameWhenItArrivesNotAtTheNextTick) {
   // A socketpair stands in for a CAN socket (same record format). Ticks are 300 ms long; the
   // frame is written 30 ms into the first tick's wait and must be handled before tick 2 starts.

@@ -13,6 +13,7 @@
 #include "devices/registry.h"
 #include "sim/bus.h"
 #include "sim/log.h"
+#include "sim/realtime_setup.h"
 #include "sim/scheduler.h"
 #include "sim/transport_factory.h"
 #include "sim/trace_writer.h"
@@ -55,6 +56,7 @@ struct NodeOptions {
   std::string ui;
   bool ui_allow_remote = false;
   bool strict = false;
+  bool rt = false;
 };
 
 /// `--ui`: the node runs as a one-node scenario (bus "main"), so the control plane sees it as it
@@ -104,6 +106,7 @@ int run_node_with_ui(const NodeOptions& o, const std::map<std::string, std::stri
   ro.trace = o.trace;
   ro.extension = plane.get();
   ro.strict_eds = o.strict;
+  ro.rt = o.rt;
   try {
     scenario::Runner runner(s, scenario::default_environment(), ro);
     g_runner.store(&runner);
@@ -202,6 +205,11 @@ int run_node(const NodeOptions& o) {
                device->node().node_id(), o.can.empty() ? "the virtual bus" : o.can.c_str(),
                o.duration_s > 0 ? "" : " (Ctrl-C stops)");
   device->power_on(scheduler.now());
+  if (o.rt) {
+    std::string note = o.virtual_time ? "real time: --rt ignored: --virtual" : sim::enter_realtime().message;
+    for (auto at = note.find('\n'); at != std::string::npos; at = note.find('\n', at + 1)) note.insert(at + 1, "vplant node: ");
+    std::fprintf(stderr, "vplant node: %s\n", note.c_str());
+  }
   if (o.duration_s > 0) {
     scheduler.run_for(sim::from_seconds(o.duration_s));
   } else {
@@ -216,6 +224,9 @@ int run_node(const NodeOptions& o) {
   if (scheduler.mode() == sim::ClockMode::RealTime) {
     std::fprintf(stderr, ", %llu overruns, worst tick lateness %lld us", static_cast<unsigned long long>(st.overruns),
                  static_cast<long long>(st.max_lateness.count()));
+    if (st.reanchors)
+      std::fprintf(stderr, " (schedule re-anchored %llu times: simulated time %.1f ms behind the wall clock)",
+                   static_cast<unsigned long long>(st.reanchors), static_cast<double>(st.slipped.count()) / 1000.0);
   }
   if (bus.transport()) {
     const auto& ts = bus.transport()->stats();
@@ -247,6 +258,8 @@ Runner add_node_command(CLI::App& app) {
   app.add_flag("--virtual", o->virtual_time, "virtual time (as fast as possible; needs --duration unless --ui)");
   app.add_option("--ui", o->ui, "[ADDR:]PORT: serve the live control plane (docs/api.md); virtual time starts paused");
   app.add_flag("--ui-allow-remote", o->ui_allow_remote, "allow --ui on a non-loopback address (no authentication!)");
+  app.add_flag("--rt", o->rt,
+               "real time: run the scheduler's thread SCHED_FIFO (priority 49) with memory locked, where permitted");
   app.add_flag("--strict", o->strict, "--eds: reject the CiA 306 deviations that are otherwise loaded with a warning");
   return [o] { return run_node(*o); };
 }

@@ -37,6 +37,7 @@ struct RunArgs {
   std::string case_name;
   std::string report;
   bool report_no_index = false;
+  bool rt = false;
 };
 
 bool stop_active_run() {
@@ -74,6 +75,7 @@ int run(const RunArgs& a) {
   o.strict_eds = a.strict;
   o.case_name = a.case_name;
   o.report_dir = a.report;
+  o.rt = a.rt;
   o.progress = !a.quiet && ::isatty(STDERR_FILENO);
   // The control plane: --ui overrides the scenario's `ui:`; made once the scenario is loaded.
   std::unique_ptr<control::ControlPlane> ui;
@@ -133,6 +135,9 @@ Runner add_run_command(CLI::App& app) {
       ->check([](const std::string& v) {
         return std::stod(v) == 0 || std::stod(v) >= 0.001 ? std::string() : std::string("0 or 0.001..1000");
       });
+  app.add_flag("--rt", a->rt,
+               "real time: run the scheduler's thread SCHED_FIFO (priority 49) with memory locked, where permitted "
+               "(docs/runtime.md, \"Real-time priority\")");
   app.add_flag("--strict", a->strict, "EDS nodes: reject the CiA 306 deviations that are otherwise loaded with a warning");
   // `vplant test` runs each case of a sweep as its own process (docs/scenarios.md, "matrix").
   app.add_option("--case", a->case_name, "run only this case of the file's matrix")->group("");
