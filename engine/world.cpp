@@ -54,8 +54,10 @@ void World::build_buses(const BuildOptions& options) {
     std::string iface = spec.iface;
     if (auto it = options.can.find(spec.name); it != options.can.end()) iface = it->second;
     auto bus = std::make_unique<sim::Bus>(spec.name);
-    // A SocketCAN bus is timed by the real wire; only the in-process bus needs the model.
-    bus->set_timing(iface.empty() ? spec.timing : sim::BusTiming::Ideal, spec.bitrate);
+    // A SocketCAN bus (or a remote socketcand bus) is timed by the real wire; the in-process bus
+    // and one served to socketcand clients need the model.
+    const bool modelled = iface.empty() || sim::is_socketcand_server_spec(iface);
+    bus->set_timing(modelled ? spec.timing : sim::BusTiming::Ideal, spec.bitrate);
     bus->set_tx_queue_depth(spec.tx_queue);
     if (!iface.empty()) {
       std::string error;

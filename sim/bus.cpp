@@ -77,7 +77,9 @@ const ErrorCounters& Bus::counters(int endpoint) const {
   return endpoints_[static_cast<std::size_t>(endpoint)].counters;
 }
 
-void Bus::send(int from_endpoint, const CanFrame& frame, Time now) {
+void Bus::send(int from_endpoint, const CanFrame& frame, Time now) { send_tagged(from_endpoint, frame, now, 0); }
+
+void Bus::send_tagged(int from_endpoint, const CanFrame& frame, Time now, std::uint32_t wire_tag) {
   unsettle();
   if (from_endpoint != kWire && !participates(from_endpoint)) return;
   Pending p{frame, from_endpoint};
@@ -85,24 +87,35 @@ void Bus::send(int from_endpoint, const CanFrame& frame, Time now) {
     const auto verdict = filter_->on_send(p.frame, from_endpoint, now);
     if (verdict.drop) {
       ++stats_.dropped_by_filter;
+      if (wire_tag != 0 && transport_) transport_->wire_result(wire_tag, p.frame, Transport::WireResult::Lost);
       return;
     }
     if (verdict.delay.count() > 0) {
-      delayed_.push_back(Delayed{p, now + verdict.delay});
+      delayed_.push_back(Delayed{p, now + verdict.delay, wire_tag});
       return;
     }
   }
   if (timing_ == BusTiming::Ideal) {
     queue_.push(p);
+    if (from_endpoint == kWire) wire_tags_.push(WireTag{wire_tag, p.frame});
     return;
   }
   auto* ep = endpoint_of(from_endpoint);
   if (ep->tx.size() >= tx_depth_) {
     ++stats_.tx_queue_overflow;
     ++ep->counters.tx_queue_overflow;
+    wire_refused(wire_tag, p.frame);
     return;
   }
   tx_push(from_endpoint, Queued{p.frame, ns_of(now)});
+  if (from_endpoint == kWire) wire_tags_.push(WireTag{wire_tag, p.frame});
+}
+
+void Bus::wire_done(Transport::WireResult result) {
+  if (wire_tags_.empty()) return;
+  const WireTag done = wire_tags_.front();
+  wire_tags_.pop();
+  if (done.tag != 0 && transport_) transport_->wire_result(done.tag, done.frame, result);
 }
 
 void Bus::refresh_head(Endpoint& ep) {
@@ -154,15 +167,19 @@ void Bus::release_delayed(Time now) {
   auto due_end = std::stable_partition(delayed_.begin(), delayed_.end(),
                                        [now](const Delayed& d) { return d.due <= now; });
   for (auto it = delayed_.begin(); it != due_end; ++it) {
+    const bool wire = it->pending.from == kWire;
     if (timing_ == BusTiming::Ideal) {
       queue_.push(it->pending);
-    } else if (it->pending.from == kWire || participates(it->pending.from)) {
+      if (wire) wire_tags_.push(WireTag{it->wire_tag, it->pending.frame});
+    } else if (wire || participates(it->pending.from)) {
       auto* ep = endpoint_of(it->pending.from);
       if (ep->tx.size() < tx_depth_) {
         tx_push(it->pending.from, Queued{it->pending.frame, ns_of(it->due)});
+        if (wire) wire_tags_.push(WireTag{it->wire_tag, it->pending.frame});
       } else {
         ++stats_.tx_queue_overflow;
         ++ep->counters.tx_queue_overflow;
+        if (wire) wire_refused(it->wire_tag, it->pending.frame);
       }
     }
   }
@@ -187,6 +204,7 @@ std::size_t Bus::deliver_due(Time now) {
         log(LogLevel::Warn, "bus {}: more than {} frames in one tick; dropping {} queued frames", name_,
             kMaxFramesPerDelivery, queue_.size());
         queue_.clear();
+        while (!wire_tags_.empty()) wire_done(Transport::WireResult::Refused);
         break;
       }
     }
@@ -217,7 +235,10 @@ void Bus::deliver_one(const Pending& p, Time now) {
   if (p.from == kWire) ++stats_.from_wire;
   const std::string_view wire_name = transport_ ? transport_->name() : std::string_view(name_);
   for (auto* tap : taps_) tap->on_bus_frame(wire_name, p.frame, now);
-  if (transport_ && p.from != kWire) transport_->send(p.frame);
+  if (transport_) {
+    if (p.from != kWire) transport_->send(p.frame);
+    else wire_done(Transport::WireResult::Delivered);
+  }
   transmit_success(p.from, now);
   receive_result(p.from, false, now);
   recessive_sequences(1, now);
@@ -328,7 +349,10 @@ void Bus::complete(Time at) {
       const std::string_view wire_name = transport_ ? transport_->name() : std::string_view(name_);
       for (auto* tap : taps_) tap->on_bus_frame(wire_name, f.frame, at);
     }
-    if (transport_ && f.from != kWire) transport_->send(f.frame);
+    if (transport_) {
+      if (f.from != kWire) transport_->send(f.frame);
+      else wire_done(Transport::WireResult::Delivered);
+    }
     transmit_success(f.from, at);
     // A success changes nothing while every REC is 0 (the state follows the counters).
     if (rec_nonzero_count_ != 0) receive_result(f.from, false, at);
@@ -541,8 +565,9 @@ std::size_t Bus::poll_transport(Time now) {
   if (!transport_) return 0;
   std::size_t n = 0;
   CanFrame f;
-  while (transport_->receive(f)) {
-    send(kWire, f, now);
+  std::uint32_t tag = 0;
+  while (transport_->receive_tagged(f, tag)) {
+    send_tagged(kWire, f, now, tag);
     ++n;
   }
   return n;

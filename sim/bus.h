@@ -194,6 +194,13 @@ class Bus {
   struct Delayed {
     Pending pending;
     Time due;
+    std::uint32_t wire_tag = 0;  ///< the transport's tag of a wire frame (see Transport::wire_result)
+  };
+  // The wire's frames waiting in queue_ (ideal) or wire_.tx (bit timing), in the same order,
+  // with their transport tags: the transport learns what became of each (wire_result).
+  struct WireTag {
+    std::uint32_t tag = 0;
+    CanFrame frame;
   };
   struct Endpoint {
     FrameReceiver* receiver = nullptr;
@@ -223,6 +230,12 @@ class Bus {
     return in_flight_.active || now_ns <= std::max(idle_ns_, idle_accounted_ns_);
   }
   std::size_t deliver_due(Time now);
+  void send_tagged(int from_endpoint, const CanFrame& frame, Time now, std::uint32_t wire_tag);
+  // A wire frame left the queues: tell the transport (tags 0 are not reported).
+  void wire_done(Transport::WireResult result);
+  void wire_refused(std::uint32_t tag, const CanFrame& frame) {
+    if (tag != 0 && transport_) transport_->wire_result(tag, frame, Transport::WireResult::Refused);
+  }
   // Every change that could give deliver() work forgets the settled instant.
   void unsettle() { settled_at_ = kNeverSettled; }
   static constexpr Time kNeverSettled = Time{Duration{std::numeric_limits<Duration::rep>::min()}};
@@ -259,6 +272,7 @@ class Bus {
   std::vector<Endpoint> endpoints_;
   RingBuffer<Pending> queue_{256};
   std::vector<Delayed> delayed_;  // small: only wire-fault delays
+  RingBuffer<WireTag> wire_tags_{8};
   std::unique_ptr<Transport> transport_;
   std::vector<FrameTap*> taps_;
   FrameFilter* filter_ = nullptr;

@@ -28,7 +28,8 @@ QueuedTransport::~QueuedTransport() {
 }
 
 void QueuedTransport::send(const CanFrame& frame) {
-  if (to_wire_.push(frame)) {
+  // The last kResultReserve slots are kept for wire results (see kResultReserve).
+  if (to_wire_.free_slots() > kResultReserve && to_wire_.push(WireEvent{WireEvent::Kind::Frame, 0, frame})) {
     ++stats_.tx_frames;
     wake_io_pending_ = true;
   } else {
@@ -36,19 +37,30 @@ void QueuedTransport::send(const CanFrame& frame) {
   }
 }
 
+void QueuedTransport::wire_result(std::uint32_t tag, const CanFrame& frame, WireResult result) {
+  const auto kind = result == WireResult::Delivered ? WireEvent::Kind::Delivered
+                    : result == WireResult::Refused ? WireEvent::Kind::Refused
+                                                    : WireEvent::Kind::Lost;
+  if (to_wire_.push(WireEvent{kind, tag, frame})) wake_io_pending_ = true;
+}
+
 bool QueuedTransport::receive(CanFrame& frame) {
-  if (to_bus_.pop(frame)) {
-    ++stats_.rx_frames;
-    return true;
+  std::uint32_t tag = 0;
+  return receive_tagged(frame, tag);
+}
+
+bool QueuedTransport::receive_tagged(CanFrame& frame, std::uint32_t& tag) {
+  TaggedFrame t;
+  if (!to_bus_.pop(t)) {
+    // Clear the wake-up, then look again: a frame queued between the two steps is not missed, and
+    // one queued after the drain leaves the fd readable for the next poll.
+    drain_fd(to_bus_fd_);
+    if (!to_bus_.pop(t)) return false;
   }
-  // Clear the wake-up, then look again: a frame queued between the two steps is not missed, and
-  // one queued after the drain leaves the fd readable for the next poll.
-  drain_fd(to_bus_fd_);
-  if (to_bus_.pop(frame)) {
-    ++stats_.rx_frames;
-    return true;
-  }
-  return false;
+  ++stats_.rx_frames;
+  frame = t.frame;
+  tag = t.tag;
+  return true;
 }
 
 void QueuedTransport::service(Time) {
@@ -61,8 +73,8 @@ void QueuedTransport::service(Time) {
 
 void QueuedTransport::clear_io_wake() { drain_fd(to_io_fd_); }
 
-bool QueuedTransport::push_to_bus(const CanFrame& frame) {
-  if (to_bus_.push(frame)) return true;
+bool QueuedTransport::push_to_bus(const CanFrame& frame, std::uint32_t tag) {
+  if (to_bus_.push(TaggedFrame{frame, tag})) return true;
   rx_dropped_.fetch_add(1, std::memory_order_relaxed);
   return false;
 }

@@ -17,12 +17,25 @@ namespace sim {
 class QueuedTransport : public Transport {
  public:
   static constexpr std::size_t kQueueCapacity = 4096;
+  /// Slots of the queue to the I/O thread that only wire results may take: the I/O thread bounds
+  /// the tagged frames in flight below this, so no result is ever lost to a full queue.
+  static constexpr std::size_t kResultReserve = 1024;
+
+  /// What the I/O thread gets from the bus, in bus order.
+  struct WireEvent {
+    enum class Kind : std::uint8_t { Frame, Delivered, Refused, Lost };
+    Kind kind = Kind::Frame;  ///< Frame: the plant's frame for the wire; else the result of a tagged one
+    std::uint32_t tag = 0;
+    CanFrame frame;
+  };
 
   ~QueuedTransport() override;
 
   std::string_view name() const override { return name_; }
   void send(const CanFrame& frame) override;
   bool receive(CanFrame& frame) override;
+  bool receive_tagged(CanFrame& frame, std::uint32_t& tag) override;
+  void wire_result(std::uint32_t tag, const CanFrame& frame, WireResult result) override;
   void service(Time now) override;
   /// Readable when the I/O thread has queued frames for the bus.
   int wait_fd() const override { return to_bus_fd_; }
@@ -39,9 +52,10 @@ class QueuedTransport : public Transport {
   /// Readable when the scheduler has queued frames for the wire (or stop was requested).
   int io_wake_fd() const { return to_io_fd_; }
   void clear_io_wake();
-  bool pop_for_wire(CanFrame& frame) { return to_wire_.pop(frame); }
-  /// Queues a frame read from the wire; call notify_bus() after a batch.
-  bool push_to_bus(const CanFrame& frame);
+  bool pop_for_wire(WireEvent& event) { return to_wire_.pop(event); }
+  /// Queues a frame read from the wire (a non-zero tag asks for its WireEvent result); call
+  /// notify_bus() after a batch.
+  bool push_to_bus(const CanFrame& frame, std::uint32_t tag = 0);
   void notify_bus();
   bool stop_requested() const { return stop_.load(std::memory_order_acquire); }
   /// Asks the I/O thread to finish (wakes it); the derived destructor joins it.
@@ -52,8 +66,12 @@ class QueuedTransport : public Transport {
   std::string name_;
   int to_bus_fd_ = -1;
   int to_io_fd_ = -1;
-  SpscQueue<CanFrame> to_wire_{kQueueCapacity};
-  SpscQueue<CanFrame> to_bus_{kQueueCapacity};
+  struct TaggedFrame {
+    CanFrame frame;
+    std::uint32_t tag = 0;
+  };
+  SpscQueue<WireEvent> to_wire_{kQueueCapacity};
+  SpscQueue<TaggedFrame> to_bus_{kQueueCapacity};
   bool wake_io_pending_ = false;
   std::atomic<bool> stop_{false};
   std::atomic<std::uint64_t> rx_dropped_{0};

@@ -207,10 +207,10 @@ void SocketcandClient::stream(int fd, socketcand::Splitter& in) {
   while (!stop_requested() && reason.empty()) {
     // What the bus queued (also what waited for this connection); a frame queued after this
     // leaves io_wake_fd readable.
-    CanFrame f;
+    WireEvent e;  // only the bus's frames: this transport tags nothing it receives
     char text[socketcand::kFormatMax];
-    while (pop_for_wire(f)) {
-      const std::size_t n = socketcand::format_send(f, text);
+    while (pop_for_wire(e)) {
+      const std::size_t n = socketcand::format_send(e.frame, text);
       if (out.size() + n > kMaxPendingOutput) {
         wire_dropped_.fetch_add(1, std::memory_order_relaxed);
         continue;
@@ -243,8 +243,8 @@ void SocketcandClient::stream(int fd, socketcand::Splitter& in) {
 }
 
 void SocketcandClient::discard_outgoing() {
-  CanFrame f;
-  while (pop_for_wire(f)) wire_dropped_.fetch_add(1, std::memory_order_relaxed);
+  WireEvent e;
+  while (pop_for_wire(e)) wire_dropped_.fetch_add(1, std::memory_order_relaxed);
 }
 
 }  // namespace sim

@@ -12,6 +12,8 @@
 #include <ctime>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "sim/log.h"
 #include "sim/socketcand_protocol.h"
 
@@ -44,6 +46,8 @@ struct SocketcandServer::Client {
   std::string out;
   std::int64_t settle_until_ms = 0;  // frames are held until then (see kRawmodeSettleMs)
   std::uint64_t errors = 0;          // messages answered with `< error ... >`
+  std::uint32_t id = 0;              // the tag of its frames on the bus (never 0)
+  int in_flight = 0;                 // its frames handed to the bus, not yet delivered or refused
   std::int64_t connected_ms = 0;     // for the handshake limit
   std::int64_t last_input_ms = 0;    // for the BCM-mode idle limit
 };
@@ -120,8 +124,8 @@ void SocketcandServer::run() {
     }
     if (fds[0].revents & POLLIN) {
       clear_io_wake();
-      CanFrame f;
-      while (pop_for_wire(f)) broadcast(f, nullptr);
+      WireEvent e;
+      while (pop_for_wire(e)) on_wire_event(e);
     }
     const std::size_t polled = fds.size() - 2;
     for (std::size_t i = 0; i < polled; ++i) {
@@ -175,6 +179,8 @@ void SocketcandServer::accept_clients() {
     auto c = std::make_unique<Client>();
     c->fd = fd;
     c->peer = who;
+    c->id = next_client_id_++;
+    if (next_client_id_ == 0) next_client_id_ = 1;
     c->connected_ms = c->last_input_ms = monotonic_ms();
     c->out.reserve(64 * 1024);  // grows (on this thread) up to kMaxPendingOutput if needed
     log(LogLevel::Info, "socketcand: bus '{}': client {} connected", channel_, who);
@@ -263,14 +269,32 @@ void SocketcandServer::refuse(Client& c, const std::string& reason) {
 }
 
 void SocketcandServer::forward_from(Client& from, const CanFrame& frame) {
-  if (!push_to_bus(frame)) {
+  // The client's own transmit queue: a frame reaches the other clients only when the bus has
+  // carried it (on_wire_event), so a client can have at most this many frames on the way.
+  if (from.in_flight >= kClientTxQueue)
+    return refuse(from, fmt::format("frame {:03X} refused: {} frames of this client wait for the bus", frame.id,
+                                    from.in_flight));
+  if (!push_to_bus(frame, from.id)) {
     const auto dropped = rx_dropped();
     if (dropped == 1 || dropped % 1000 == 0)
       log(LogLevel::Warn, "socketcand: bus '{}': the scheduler is behind; {} frame(s) from clients dropped", channel_,
           dropped);
+    return refuse(from, fmt::format("frame {:03X} refused: the simulation is behind", frame.id));
   }
+  ++from.in_flight;
   notify_bus();
-  broadcast(frame, &from);
+}
+
+void SocketcandServer::on_wire_event(const WireEvent& e) {
+  using Kind = WireEvent::Kind;
+  if (e.kind == Kind::Frame) return broadcast(e.frame, nullptr);
+  Client* from = nullptr;
+  for (auto& c : clients_)
+    if (c->id == e.tag && c->fd >= 0) from = c.get();
+  if (from) --from->in_flight;
+  if (e.kind == Kind::Delivered) return broadcast(e.frame, from);
+  if (e.kind == Kind::Refused && from)
+    refuse(*from, fmt::format("frame {:03X} refused: the bus's transmit queue is full", e.frame.id));
 }
 
 void SocketcandServer::broadcast(const CanFrame& frame, const Client* except) {

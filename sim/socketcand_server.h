@@ -3,8 +3,11 @@
 // channel a client opens. It is the bus's Transport; the sockets live on the server's own thread.
 //
 // Every client in raw mode receives every frame of the bus (the plant's and the other clients'),
-// stamped with the wall clock; a frame a client sends reaches the bus and the other clients, not
-// the sender (like a CAN_RAW socket). A message the server cannot use (bad field, unknown or
+// stamped with the wall clock; a frame a client sends goes to the bus, where it waits in the
+// wire's transmit queue and arbitrates like any node's (on a bit-timed bus), and reaches the other
+// clients once the bus has carried it, not the sender (like a CAN_RAW socket). A client has at
+// most kClientTxQueue frames on the way; beyond, and when the bus's queue is full, the frame is
+// refused with `< error … >` to that client. A message the server cannot use (bad field, unknown or
 // unsupported command) is answered with `< error REASON >` and the connection stays; a client
 // that breaks the framing (bytes outside `< >`, an overlong message), opens another bus or stops
 // reading is closed with a logged reason. Nothing a client does reaches the simulation except
@@ -42,6 +45,11 @@ class SocketcandServer final : public QueuedTransport {
   /// After `< ok >` to `< rawmode >`, frames wait this long: python-can reads that `< ok >` with
   /// one recv() and fails if frames arrive in the same segment.
   static constexpr int kRawmodeSettleMs = 200;
+  /// Frames one client may have on the way to the bus (handed over, not yet on the wire); more
+  /// are refused with `< error frame ID refused: … >`. All clients together then share the bus's
+  /// transmit queue for the wire (the bus's `tx_queue`): one client cannot fill it alone.
+  static constexpr int kClientTxQueue = 16;
+  static_assert(kMaxClients * kClientTxQueue < static_cast<int>(kResultReserve), "results must always fit");
 
   using Limits = SocketcandLimits;
 
@@ -68,6 +76,8 @@ class SocketcandServer final : public QueuedTransport {
   void handle(Client& c, std::string_view message);
   void forward_from(Client& from, const CanFrame& frame);
   void broadcast(const CanFrame& frame, const Client* except);
+  /// A plant frame for the clients, or what the bus did with a client's frame.
+  void on_wire_event(const WireEvent& e);
   void enqueue(Client& c, std::string_view text);
   void flush(Client& c);
   void drop(Client& c, const std::string& reason);
@@ -79,6 +89,7 @@ class SocketcandServer final : public QueuedTransport {
   int listen_fd_ = -1;
   std::uint16_t port_ = 0;
   std::vector<std::unique_ptr<Client>> clients_;  // server thread only
+  std::uint32_t next_client_id_ = 1;  // server thread only
   std::atomic<int> clients_now_{0};
   std::atomic<std::uint64_t> clients_dropped_{0};
   std::thread thread_;

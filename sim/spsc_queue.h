@@ -32,6 +32,10 @@ class SpscQueue {
     return true;
   }
   std::size_t capacity() const { return mask_ + 1; }
+  /// Producer side: free slots (at least this many; the consumer may have freed more).
+  std::size_t free_slots() const {
+    return mask_ + 1 - (tail_.load(std::memory_order_relaxed) - head_.load(std::memory_order_acquire));
+  }
 
  private:
   static std::size_t round_up(std::size_t n) {

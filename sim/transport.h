@@ -1,6 +1,7 @@
 // A transport carries a bus's frames to and from the outside world (e.g. a SocketCAN interface).
 #pragma once
 
+#include <cstdint>
 #include <string_view>
 
 #include "sim/can_frame.h"
@@ -25,6 +26,19 @@ class Transport {
   virtual void send(const CanFrame& frame) = 0;
   /// Non-blocking receive of one frame; false when nothing is pending.
   virtual bool receive(CanFrame& frame) = 0;
+  /// receive(), with the transport's tag for the frame: non-zero asks the bus for a wire_result()
+  /// (a transport serving several peers attributes and paces their frames by it).
+  virtual bool receive_tagged(CanFrame& frame, std::uint32_t& tag) {
+    tag = 0;
+    return receive(frame);
+  }
+  /// What became of a frame received with a non-zero tag.
+  enum class WireResult : std::uint8_t {
+    Delivered,  ///< on the bus: at its end of frame (bit timing), in its tick (ideal)
+    Refused,    ///< the bus's transmit queue for the wire was full (or the tick's frame guard tripped)
+    Lost,       ///< dropped by a wire fault (FrameFilter)
+  };
+  virtual void wire_result(std::uint32_t /*tag*/, const CanFrame& /*frame*/, WireResult /*result*/) {}
   /// Retries queued frames and watches the link. Called every tick and after polls.
   virtual void service(Time now) = 0;
   /// File descriptor to wait on for readability (-1 if none).

@@ -15,6 +15,7 @@ bool starts_with(const std::string& s, std::string_view prefix) { return s.rfind
 }  // namespace
 
 bool is_socketcand_spec(const std::string& spec) { return starts_with(spec, kServer) || starts_with(spec, kClient); }
+bool is_socketcand_server_spec(const std::string& spec) { return starts_with(spec, kServer); }
 
 std::unique_ptr<Transport> open_transport(const std::string& bus_name, const std::string& spec, std::string& error) {
   if (starts_with(spec, kServer) || starts_with(spec, kClient)) {

@@ -18,5 +18,8 @@ std::unique_ptr<Transport> open_transport(const std::string& bus_name, const std
 
 /// True if `spec` names a transport other than SocketCAN (it needs no kernel support).
 bool is_socketcand_spec(const std::string& spec);
+/// True if `spec` serves the bus itself (socketcand server): no outside wire times its frames, so
+/// the bus's own timing model does (its clients' frames arbitrate with the plant's).
+bool is_socketcand_server_spec(const std::string& spec);
 
 }  // namespace sim

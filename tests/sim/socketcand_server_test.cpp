@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "sim/bus.h"
+#include "sim/can_bit_timing.h"
 #include "sim/socketcand_client.h"
 #include "sim/socketcand_protocol.h"
 #include "sim/transport_factory.h"
@@ -69,7 +70,7 @@ class TcpClient {
       const auto r = in_.next(m, error);
       if (r == sc::Splitter::Result::Message) return std::string(m);
       if (r == sc::Splitter::Result::Error) return "splitter: " + error;
-      char buf[512];
+      char buf[256];  // fits beside the part message a drained Splitter may hold
       const ssize_t n = ::recv(fd_, buf, sizeof buf, 0);
       if (n <= 0) {
         eof_ = n == 0;
@@ -138,6 +139,23 @@ bool receive_within(sim::Transport& t, sim::CanFrame& f, int timeout_ms = 3000) 
     ::poll(&p, 1, 10);
   }
   return t.receive(f);
+}
+
+// receive_within() as a bus does it: the frame is carried (wire_result) at once, so the server
+// passes it to its other clients and the sender's transmit queue has room again.
+bool carry_within(sim::Transport& t, sim::CanFrame& f, int timeout_ms = 3000) {
+  const auto until = Clock::now() + std::chrono::milliseconds(timeout_ms);
+  std::uint32_t tag = 0;
+  for (;;) {
+    if (t.receive_tagged(f, tag)) {
+      if (tag != 0) t.wire_result(tag, f, sim::Transport::WireResult::Delivered);
+      t.service(sim::Time{});
+      return true;
+    }
+    if (Clock::now() >= until) return false;
+    pollfd p{t.wait_fd(), POLLIN, 0};
+    ::poll(&p, 1, 10);
+  }
 }
 
 const sim::CanFrame kHeartbeat = sim::CanFrame::data_frame(0x705, {0x05});
@@ -279,7 +297,7 @@ TEST_P(SocketcandBadClient, GetsAReasonWhileTheBusAndOtherClientsContinue) {
     if (bad_input.before_open) bad.handshake_after_hi();
     EXPECT_FALSE(server->receive(f));
     bad.send("< send 601 8 40 0 10 0 0 0 0 0 >");
-    ASSERT_TRUE(receive_within(*server, f));
+    ASSERT_TRUE(carry_within(*server, f));
     EXPECT_EQ(f, kSdo);
     EXPECT_EQ(good.next_frame(), kSdo);
     EXPECT_EQ(server->clients_dropped(), 0u);
@@ -289,7 +307,7 @@ TEST_P(SocketcandBadClient, GetsAReasonWhileTheBusAndOtherClientsContinue) {
   // Nothing of it reached the bus; the good client still has the bus both ways.
   EXPECT_FALSE(server->receive(f));
   good.send("< send 601 8 40 0 10 0 0 0 0 0 >");
-  ASSERT_TRUE(receive_within(*server, f));
+  ASSERT_TRUE(carry_within(*server, f));
   EXPECT_EQ(f, kSdo);
   server->send(kHeartbeat);
   server->service(sim::Time{});
@@ -399,6 +417,127 @@ TEST(SocketcandServer, AClientIdleInBcmModeIsClosedAndOneThatTalksIsNot) {
   EXPECT_EQ(server->client_count(), 1);
 }
 
+// A node that answers every SDO request to node 5 at once, and a log of what the bus delivered.
+struct SdoAnswerer : sim::FrameReceiver {
+  sim::Bus* bus = nullptr;
+  int endpoint = -1;
+  std::vector<std::pair<sim::CanFrame, sim::Time>> seen;
+  void on_frame(const sim::CanFrame& f, sim::Time now) override {
+    seen.emplace_back(f, now);
+    if (f.id == 0x605 && !f.rtr)
+      bus->send(endpoint, sim::CanFrame::data_frame(0x585, {0x43, 0x00, 0x10, 0x00, 0x96, 0x01, 0x0A, 0x00}), now);
+  }
+};
+
+TEST(SocketcandServer, ClientFramesTakeTheBitTimedBusesTime) {
+  // Virtual time: the bus stands still while the server hands the request over, then the request
+  // and the answer each take their bit time at 500 kbit/s.
+  sim::Bus bus("main");
+  bus.set_timing(sim::BusTiming::Bit, 500000);
+  bus.set_transport(serve());
+  auto& server = static_cast<sim::SocketcandServer&>(*bus.transport());
+  SdoAnswerer node;
+  node.bus = &bus;
+  node.endpoint = bus.attach(&node);
+  TcpClient master(server.port());
+  master.handshake();
+  std::this_thread::sleep_for(std::chrono::milliseconds(sim::SocketcandServer::kRawmodeSettleMs + 50));
+
+  const auto request = sim::CanFrame::data_frame(0x605, {0x40, 0x00, 0x10, 0x00, 0, 0, 0, 0});
+  master.send("< send 605 8 40 0 10 0 0 0 0 0 >");
+  const sim::Time sent{std::chrono::microseconds(1000)};
+  ASSERT_TRUE(wait_for([&] { return bus.poll_transport(sent) == 1; }));
+  sim::Time t = sent;
+  while (bus.stats().frames < 2 && t < sent + std::chrono::milliseconds(10)) {
+    t += std::chrono::microseconds(1);
+    bus.deliver(t);
+  }
+  ASSERT_EQ(node.seen.size(), 1u);  // the request (its own answer does not come back to it), then ...
+  EXPECT_EQ(node.seen[0].first, request);
+  const std::int64_t bit_us = 2;
+  const auto request_bits = sim::frame_bits(request).until_eof();
+  EXPECT_GE((node.seen[0].second - sent).count(), request_bits * bit_us);
+  // ... the answer, seen by the master: at least both frames' bit time after the request was sent.
+  const auto answer = master.next_frame();
+  EXPECT_EQ(answer.id, 0x585u);
+  const auto answer_bits = sim::frame_bits(answer).until_eof();
+  ASSERT_EQ(bus.stats().frames, 2u);
+  // The answer was delivered (to the wire) when the last deliver() ran past its end of frame.
+  EXPECT_GE((t - sent).count(), (request_bits + answer_bits) * bit_us);
+  EXPECT_GE(request_bits + answer_bits, 200u);  // 0.40 ms or more at 500 kbit/s
+}
+
+TEST(SocketcandServer, AFloodingClientIsBoundedByItsQueueAndTheBus) {
+  // One client writes 2000 frames at once: it keeps at most kClientTxQueue on the way, the rest
+  // are refused to it with a reason; the bus carries no more than its bit rate allows; another
+  // client's frame still gets through.
+  sim::Bus bus("main");
+  bus.set_timing(sim::BusTiming::Bit, 500000);
+  bus.set_transport(serve());
+  auto& server = static_cast<sim::SocketcandServer&>(*bus.transport());
+  Recorder plant;
+  bus.attach(&plant);
+  TcpClient flood(server.port()), polite(server.port());
+  flood.handshake();
+  polite.handshake();
+  std::string lines;
+  for (int i = 0; i < 2000; ++i) lines += "< send 100 8 1 2 3 4 5 6 7 8 >";
+  flood.send(lines);
+  int refused = 0;
+  while (refused < 2000 - sim::SocketcandServer::kClientTxQueue) {
+    const auto m = flood.next();
+    if (m.rfind("< error frame 100 refused:", 0) == 0) ++refused;
+    else ASSERT_EQ(m.rfind("< frame", 0), 0u) << m;
+  }
+  EXPECT_EQ(refused, 2000 - sim::SocketcandServer::kClientTxQueue);
+  polite.send("< send 601 8 40 0 10 0 0 0 0 0 >");
+  // 10 ms of virtual time in 10 µs ticks; the I/O thread gets a moment of wall time per tick.
+  sim::Time t{};
+  ASSERT_TRUE(wait_for([&] {
+    bus.poll_transport(t);
+    return bus.stats().from_wire + bus.pending_frames() >= 1u + sim::SocketcandServer::kClientTxQueue;
+  }));
+  while (t < sim::Time{std::chrono::milliseconds(10)}) {
+    t += std::chrono::microseconds(10);
+    bus.poll_transport(t);
+    bus.deliver(t);
+  }
+  const auto frame_us = sim::frame_bits(kSdo).total() * 2;
+  EXPECT_EQ(bus.stats().from_wire, 1u + sim::SocketcandServer::kClientTxQueue);
+  EXPECT_LE(bus.stats().from_wire, 10000u / frame_us + 1);
+  bool polite_delivered = false;
+  for (const auto& f : plant.frames) polite_delivered |= f == kSdo;
+  EXPECT_TRUE(polite_delivered);
+  EXPECT_EQ(server.clients_dropped(), 0u);
+  // Room again once the bus carried them: the flooding client may send again.
+  flood.send("< send 100 0 >");
+  ASSERT_TRUE(wait_for([&] { return bus.poll_transport(t) == 1; }));
+}
+
+TEST(SocketcandServer, AFullBusQueueRefusesTheFrameToItsSender) {
+  // Two clients against a transmit queue of 4 for the wire: the fifth frame is refused by the bus
+  // and the refusal reaches the client that sent it.
+  sim::Bus bus("main");
+  bus.set_timing(sim::BusTiming::Bit, 500000);
+  bus.set_tx_queue_depth(4);
+  bus.set_transport(serve());
+  auto& server = static_cast<sim::SocketcandServer&>(*bus.transport());
+  TcpClient a(server.port()), b(server.port());
+  a.handshake();
+  b.handshake();
+  a.send("< send 100 0 >< send 101 0 >< send 102 0 >");
+  ASSERT_TRUE(wait_for([&] { return bus.pending_frames() == 3 || bus.poll_transport(sim::Time{}) == 3; }));
+  b.send("< send 200 0 >< send 201 0 >");
+  std::size_t taken = 0;
+  ASSERT_TRUE(wait_for([&] {
+    taken += bus.poll_transport(sim::Time{});
+    return taken == 2;
+  }));
+  bus.deliver(sim::Time{});  // service(): the results go to the server
+  EXPECT_EQ(b.next(), "< error frame 201 refused: the bus's transmit queue is full >");
+  EXPECT_EQ(bus.stats().tx_queue_overflow, 1u);
+}
+
 TEST(SocketcandClient, JoinsAServerAndExchangesFramesBothWays) {
   auto server = serve("can0");
   std::string error;
@@ -414,7 +553,7 @@ TEST(SocketcandClient, JoinsAServerAndExchangesFramesBothWays) {
   client->send(kSdo);
   client->service(sim::Time{});
   sim::CanFrame f;
-  ASSERT_TRUE(receive_within(*server, f));
+  ASSERT_TRUE(carry_within(*server, f));
   EXPECT_EQ(f, kSdo);
   EXPECT_EQ(observer.next_frame(), kSdo);
   // The remote bus → our bus, from the server's side and from another client.
@@ -425,6 +564,8 @@ TEST(SocketcandClient, JoinsAServerAndExchangesFramesBothWays) {
   auto ext = sim::CanFrame::data_frame(0x18FF0102, {1, 2, 3, 4, 5, 6, 7, 8});
   ext.extended = true;
   observer.send("< send 18FF0102 8 1 2 3 4 5 6 7 8 >");
+  ASSERT_TRUE(carry_within(*server, f));  // the server's bus carries it, then its clients see it
+  EXPECT_EQ(f, ext);
   ASSERT_TRUE(receive_within(*client, f));
   EXPECT_EQ(f, ext);
   EXPECT_EQ(client->stats().rx_frames, 2u);

@@ -96,15 +96,23 @@ int main(int argc, char** argv) {
   std::printf("  process CPU (incl. the client reader): %.2f us/frame; %.0f frames/s wall\n", proc_out / frames * 1e6,
               frames / wall_out);
 
-  // Client → bus: the client writes `< send >` lines; the scheduler thread only dequeues.
+  // Client → bus: the client writes `< send >` lines; the scheduler thread dequeues and reports
+  // each frame carried. A client may have SocketcandServer::kClientTxQueue frames on the way; the
+  // writer sends a window of that many and sends the next one when they have been carried.
+  std::atomic<long> got{0};
   std::thread writer([&] {
+    constexpr long kWindow = sim::SocketcandServer::kClientTxQueue;
     const std::string line = "< send 205 8 7 0 0 20 0 0 0 0 >";
     std::string batch;
-    for (int i = 0; i < 100; ++i) batch += line;
-    for (long n = 0; n < frames; n += 100)
+    for (long i = 0; i < kWindow; ++i) batch += line;
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    for (long n = 0; n < frames; n += kWindow) {
+      while (n - got.load() > 0 && std::chrono::steady_clock::now() < until) std::this_thread::yield();
+      // The server frees the window when the results reach its thread, a moment after `got`.
+      if (n > 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
       if (::send(fd, batch.data(), batch.size(), 0) != static_cast<ssize_t>(batch.size())) return;
+    }
   });
-  long got = 0;
   double recv_cpu = 0;
   const double proc1 = cpu_seconds(CLOCK_PROCESS_CPUTIME_ID);
   const auto wall1 = std::chrono::steady_clock::now();
@@ -113,18 +121,25 @@ int main(int argc, char** argv) {
     pollfd p{server->wait_fd(), POLLIN, 0};
     ::poll(&p, 1, 100);
     const double t0 = cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
-    while (server->receive(f)) ++got;
+    // As the bus does: each frame's result returns the client's transmit-queue slot.
+    std::uint32_t tag = 0;
+    while (server->receive_tagged(f, tag)) {
+      server->wire_result(tag, f, sim::Transport::WireResult::Delivered);
+      ++got;
+    }
+    server->service(sim::Time{});
     recv_cpu += cpu_seconds(CLOCK_THREAD_CPUTIME_ID) - t0;
     if (std::chrono::steady_clock::now() - wall1 > std::chrono::seconds(60)) break;
   }
   const double wall_in = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall1).count();
   const double proc_in = cpu_seconds(CLOCK_PROCESS_CPUTIME_ID) - proc1;
   writer.join();
-  std::printf("client -> bus: %ld of %ld frames, %llu dropped (scheduler behind)\n", got, frames,
+  std::printf("client -> bus (windows of %d): %ld of %ld frames, %llu dropped (scheduler behind)\n",
+              sim::SocketcandServer::kClientTxQueue, got.load(), frames,
               static_cast<unsigned long long>(server->rx_dropped()));
-  std::printf("  scheduler thread CPU: %.0f ns/frame (receive, wake-ups included)\n", recv_cpu / (got ? got : 1) * 1e9);
+  std::printf("  scheduler thread CPU: %.0f ns/frame (receive, wake-ups included)\n", recv_cpu / (got ? got.load() : 1) * 1e9);
   std::printf("  process CPU (incl. the client writer): %.2f us/frame; %.0f frames/s wall\n",
-              proc_in / (got ? got : 1) * 1e6, got / wall_in);
+              proc_in / (got ? got.load() : 1) * 1e6, static_cast<double>(got.load()) / wall_in);
   done = true;
   ::shutdown(fd, SHUT_RDWR);
   reader.join();
