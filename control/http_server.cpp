@@ -127,6 +127,7 @@ struct Server::Impl {
 
   MHD_Result request(MHD_Connection* c, const char* url, const char* method, const char* upload, size_t* upload_size,
                      void** con_cls) {
+    lower_this_thread_priority();  // the connection thread (once): below the scheduler
     auto* ex = static_cast<Exchange*>(*con_cls);
     if (!ex) {
       ex = new Exchange;
