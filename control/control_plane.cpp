@@ -16,8 +16,10 @@
 #include "devices/canopen/nmt_state.h"
 #include "devices/canopen/sdo_abort.h"
 #include "engine/fault_injector.h"
+#include "engine/master_monitor.h"
 #include "engine/scenario.h"
 #include "engine/value_codec.h"
+#include "engine/yaml_fields.h"
 #include "engine/world.h"
 #include "sim/scheduler.h"
 #ifdef VPLANT_HAVE_DASHBOARD
@@ -32,6 +34,8 @@ namespace {
 
 constexpr std::size_t kMaxBody = 64 * 1024;
 constexpr auto kCommandTimeout = std::chrono::milliseconds(2000);
+// GET /api/findings answers at most this many findings (built between ticks: keep it short).
+constexpr std::size_t kFindingsPage = 100;
 constexpr auto kSdoWait = std::chrono::milliseconds(5000);
 
 /// httplib's worker pool, its threads at lowered priority (control/server_thread_priority.h).
@@ -209,6 +213,7 @@ struct ControlPlane::Server {
   std::vector<int> node_bus;
   std::vector<std::string> node_products;
   std::vector<std::vector<std::string>> node_inputs;
+  const scenario::MasterMonitor* monitor = nullptr;
 
   explicit Server(ControlPlane& c) : cp(c) {}
 
@@ -279,6 +284,7 @@ struct ControlPlane::Server {
   }
 
   void build_static(const scenario::RunContext& ctx) {
+    monitor = ctx.master_monitor;
     auto& world = ctx.world;
     const auto& sc = ctx.scenario;
     json buses = json::array();
@@ -375,6 +381,22 @@ struct ControlPlane::Server {
     http.Get("/api/faults", guarded([this](const httplib::Request& req, httplib::Response& res) { list_faults(req, res); }));
     http.Delete(R"(/api/faults/([^/]+))", guarded([this](const httplib::Request& req, httplib::Response& res) { clear_fault(req, res); }));
     http.Get("/api/signals", guarded([this](const httplib::Request& req, httplib::Response& res) { signals(req, res); }));
+    // The verdict on the master: findings from ?since=N on, a page at a time, taken between ticks.
+    http.Get("/api/findings", guarded([this](const httplib::Request& req, httplib::Response& res) {
+      if (!monitor) throw HttpError{404, "this run has no master monitor"};
+      std::size_t since = 0;
+      if (req.has_param("since")) {
+        const auto v = scenario::parse_integer(req.get_param_value("since"));
+        if (!v || *v < 0) throw HttpError{400, "since must be a finding count (a non-negative integer)"};
+        since = static_cast<std::size_t>(*v);
+      }
+      const auto* m = monitor;
+      auto body = call<std::string>([m, since](const scenario::RunContext&) {
+        return scenario::findings_json(m->findings(), m->rules(), m->bus_names(), since, kFindingsPage);
+      });
+      res.status = 200;
+      res.set_content(std::move(body), "application/json");
+    }));
     http.Get("/api/clock", guarded([this](const httplib::Request&, httplib::Response& res) {
       need_run();
       reply(res, 200, clock_json());
@@ -397,6 +419,7 @@ struct ControlPlane::Server {
           {std::regex("/api/faults/[^/]+"), "DELETE"},
           {std::regex("/api/signals"), "GET"},
           {std::regex("/api/clock"), "GET, POST"},
+          {std::regex("/api/findings"), "GET"},
           {std::regex("/api/events"), "GET"}};
       for (const auto& [re, methods] : known)
         if (std::regex_match(req.path, re)) throw HttpError{405, req.method + " is not allowed on " + req.path + " (use " + methods + ")"};

@@ -27,6 +27,8 @@
 
 namespace scenario {
 
+class MasterMonitor;
+
 struct RunOptions {
   std::map<std::string, std::string> can;  ///< --can BUS=IFACE
   bool realtime = false;                   ///< --realtime
@@ -34,6 +36,7 @@ struct RunOptions {
   std::optional<sim::Duration> duration;   ///< --duration
   std::optional<std::uint64_t> seed;       ///< --seed
   std::string trace, csv, junit;           ///< override the scenario's outputs
+  std::string master_report;               ///< --master-report: the master monitor's findings as JSON
   bool progress = false;                   ///< progress line on stderr (a terminal)
   bool quiet = false;                      ///< no summary (tests, benchmarks)
   bool strict_eds = false;                 ///< --strict: EDS nodes reject CiA 306 deviations
@@ -64,6 +67,8 @@ struct RunSummary {
   std::size_t assertions = 0;
   std::size_t failures = 0;
   std::size_t faults = 0;
+  std::size_t master_findings = 0;        ///< the master monitor's findings (all rules, dropped ones too)
+  std::size_t master_errors = 0;          ///< of which of error severity
   bool interrupted = false;
 };
 
@@ -83,6 +88,8 @@ class Runner {
 
   const Verdicts& verdicts() const;
   const RunSummary& summary() const;
+  /// The verdict on the master: the findings of the master monitor (master_monitor.h).
+  const MasterMonitor& master_monitor() const;
 
  private:
   struct Impl;
