@@ -147,7 +147,7 @@ void MasterMonitor::on_frame(int bus, const sim::CanFrame& f, sim::Time now) {
 void MasterMonitor::on_master_frame(BusWatch& b, int bus, const sim::CanFrame& f, sim::Time now) {
   const Evidence e{now, f, true};
   if (f.extended) {
-    master_rpdo(b, bus, e);
+    master_rpdo(bus, e);
   } else if (f.id == 0) {
     master_nmt(b, bus, e);
   } else if (f.id == 0x80) {
@@ -158,7 +158,7 @@ void MasterMonitor::on_master_frame(BusWatch& b, int bus, const sim::CanFrame& f
     NodeWatch* w = watch_at(b, static_cast<std::uint8_t>(f.id - 0x700));
     if (w && f.rtr) early(*w, bus, e, "a node guarding request");
   } else {
-    master_rpdo(b, bus, e);
+    master_rpdo(bus, e);
   }
 }
 
@@ -412,10 +412,9 @@ void MasterMonitor::check_pdo_config(NodeWatch& w, int bus, const Evidence& e, s
          kind, number, w.id, comm, current, value);
 }
 
-void MasterMonitor::master_rpdo(BusWatch& b, int bus, const Evidence& e) {
+void MasterMonitor::master_rpdo(int bus, const Evidence& e) {
   const sim::CanFrame& f = e.frame;
   if (f.rtr) return;
-  (void)b;
   for (auto& w : nodes_) {
     if (w.bus != bus) continue;
     const int number = w.node->rpdo_for(f.id, f.extended);

@@ -118,7 +118,7 @@ class MasterMonitor final : public sim::Steppable {
   void on_node_frame(BusWatch& b, int bus, int watch, const sim::CanFrame& f, sim::Time now);
   void master_nmt(BusWatch& b, int bus, const Evidence& e);
   void master_sdo(BusWatch& b, int bus, std::uint8_t id, const Evidence& e);
-  void master_rpdo(BusWatch& b, int bus, const Evidence& e);
+  void master_rpdo(int bus, const Evidence& e);
   void master_sync(BusWatch& b, int bus, const Evidence& e);
   void server_sdo(BusWatch& b, int bus, std::uint8_t id, const Evidence& e);
   void check_pdo_config(NodeWatch& w, int bus, const Evidence& e, std::uint16_t index, std::uint8_t sub);

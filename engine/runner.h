@@ -4,6 +4,7 @@
 //   2 scripted master   decides assertions on the state at `now`, sends SYNC/NMT/SDO/PDOs
 //   3 plant → devices   sensor inputs = plant outputs at `now`
 //   4 nodes             (scenario order) consume the tick's frames, sample inputs, drive outputs
+//     master monitor    the verdict on the master: SDO timeouts, device states (master_monitor.h)
 //   5 devices → plant   actuator commands for [now, now + dt]
 //   6 recorder          CSV/plot row: plant state at `now`, device outputs for the tick
 //   7 plant             integrates [now, now + dt]
