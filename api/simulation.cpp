@@ -175,7 +175,7 @@ void Simulation::Impl::build() {
   nodes = std::make_unique<scenario::NodeGroup>(*world);
 
   scheduler = std::make_unique<sim::Scheduler>(s.clock.tick, sim::ClockMode::Virtual);
-  scenario::assemble_tick(*scheduler, scenario::TickParts{*world, *faults, *master, *nodes, &caller_steps, nullptr});
+  scenario::assemble_tick(*scheduler, scenario::TickParts{*world, *faults, *master, *nodes, &caller_steps, nullptr, nullptr});
 
   for (auto& bus : world->buses()) {
     last_frames.push_back(std::make_unique<LastFrames>());

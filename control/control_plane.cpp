@@ -17,8 +17,10 @@
 #include "devices/canopen/sdo_abort.h"
 #include "engine/fault_codec.h"
 #include "engine/fault_injector.h"
+#include "engine/master_monitor.h"
 #include "engine/scenario.h"
 #include "engine/value_codec.h"
+#include "engine/yaml_fields.h"
 #include "engine/world.h"
 #include "sim/scheduler.h"
 #ifdef VPLANT_HAVE_DASHBOARD
@@ -35,6 +37,8 @@ constexpr std::size_t kMaxBody = 64 * 1024;
 constexpr unsigned kMaxConnectionsPerAddress = 64;
 constexpr std::size_t kMaxLiveFaults = 256;
 constexpr auto kCommandTimeout = std::chrono::milliseconds(2000);
+// GET /api/findings answers at most this many findings (built between ticks: keep it short).
+constexpr std::size_t kFindingsPage = 100;
 constexpr auto kSdoWait = std::chrono::milliseconds(5000);
 
 /// A client error: answered as {"error": reason} with its status, nothing changed.
@@ -202,6 +206,7 @@ struct ControlPlane::Server {
   std::vector<int> node_bus;
   std::vector<std::string> node_products;
   std::vector<std::vector<std::string>> node_inputs;
+  const scenario::MasterMonitor* monitor = nullptr;
 
   explicit Server(ControlPlane& c) : cp(c) {}
 
@@ -295,6 +300,7 @@ struct ControlPlane::Server {
   }
 
   void build_static(const scenario::RunContext& ctx) {
+    monitor = ctx.master_monitor;
     auto& world = ctx.world;
     const auto& sc = ctx.scenario;
     json buses = json::array();
@@ -391,6 +397,22 @@ struct ControlPlane::Server {
     router.add("GET", "/api/faults", guarded([this](const http::Request& req, http::Response& res) { list_faults(req, res); }));
     router.add("DELETE", R"(/api/faults/([^/]+))", guarded([this](const http::Request& req, http::Response& res) { clear_fault(req, res); }));
     router.add("GET", "/api/signals", guarded([this](const http::Request& req, http::Response& res) { signals(req, res); }));
+    // The verdict on the master: findings from ?since=N on, a page at a time, taken between ticks.
+    router.add("GET", "/api/findings", guarded([this](const http::Request& req, http::Response& res) {
+      if (!monitor) throw HttpError{404, "this run has no master monitor"};
+      std::size_t since = 0;
+      if (req.has_param("since")) {
+        const auto v = scenario::parse_integer(req.param("since"));
+        if (!v || *v < 0) throw HttpError{400, "since must be a finding count (a non-negative integer)"};
+        since = static_cast<std::size_t>(*v);
+      }
+      const auto* m = monitor;
+      res.status = 200;
+      res.type = "application/json";
+      res.body = call<std::string>([m, since](const scenario::RunContext&) {
+        return scenario::findings_json(m->findings(), m->rules(), m->bus_names(), since, kFindingsPage);
+      });
+    }));
     router.add("GET", "/api/clock", guarded([this](const http::Request&, http::Response& res) {
       need_run();
       reply(res, 200, clock_json());

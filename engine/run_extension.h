@@ -12,12 +12,14 @@ namespace scenario {
 struct Scenario;
 class World;
 class FaultInjector;
+class MasterMonitor;
 
 struct RunContext {
   const Scenario& scenario;
   World& world;
   FaultInjector& faults;
   sim::Scheduler& scheduler;
+  const MasterMonitor* master_monitor = nullptr;  ///< the verdict on the master (findings)
 };
 
 class RunExtension {

@@ -11,6 +11,8 @@
 #include "engine/bus_report.h"
 #include "engine/fault_injector.h"
 #include "engine/junit_writer.h"
+#include "engine/master_monitor.h"
+#include "engine/master_report.h"
 #include "engine/node_group.h"
 #include "engine/recorder.h"
 #include "engine/scenario_cases.h"
@@ -51,6 +53,7 @@ struct Runner::Impl {
   std::unique_ptr<FaultInjector> faults;
   std::unique_ptr<ScriptedMaster> master;
   std::unique_ptr<NodeGroup> nodes;
+  std::unique_ptr<MasterMonitor> monitor;
   std::unique_ptr<Recorder> recorder;
   std::unique_ptr<sim::TraceWriter> trace;
   std::unique_ptr<sim::Scheduler> scheduler;
@@ -98,7 +101,8 @@ Runner::Runner(const Scenario& scenario, const Environment& env, const RunOption
   if (!options.report_dir.empty()) m.report = std::make_unique<report::CaseCollector>(scenario, *m.world, *m.recorder);
 
   m.scheduler = std::make_unique<sim::Scheduler>(scenario.clock.tick, realtime ? sim::ClockMode::RealTime : sim::ClockMode::Virtual);
-  assemble_tick(*m.scheduler, TickParts{*m.world, *m.faults, *m.master, *m.nodes, nullptr, m.recorder.get()});
+  m.monitor = std::make_unique<MasterMonitor>(*m.world, scenario.master_rules, scenario.clock.tick, m.faults.get());
+  assemble_tick(*m.scheduler, TickParts{*m.world, *m.faults, *m.master, *m.nodes, nullptr, m.monitor.get(), m.recorder.get()});
 
   if (!m.trace_path.empty()) {
     std::string error = prepare_output(m.trace_path);
@@ -122,6 +126,7 @@ Runner::~Runner() {
 void Runner::request_stop() { impl_->scheduler->request_stop(); }
 const Verdicts& Runner::verdicts() const { return impl_->verdicts; }
 const RunSummary& Runner::summary() const { return impl_->summary; }
+const MasterMonitor& Runner::master_monitor() const { return *impl_->monitor; }
 Runner* active_runner() { return g_active.load(); }
 
 int Runner::run() {
@@ -129,7 +134,7 @@ int Runner::run() {
   g_active.store(this);
   auto& sched = *m.scheduler;
   const bool realtime = sched.mode() == sim::ClockMode::RealTime;
-  if (m.options.extension) m.options.extension->attach(RunContext{m.scenario, *m.world, *m.faults, sched});
+  if (m.options.extension) m.options.extension->attach(RunContext{m.scenario, *m.world, *m.faults, sched, m.monitor.get()});
   for (auto& n : m.world->nodes()) n.device->power_on(sched.now());
   // One line when the nodes are up, so a master programmer (real time, or an external master with
   // --no-script) knows where to connect before anything else happens.
@@ -208,10 +213,27 @@ int Runner::run() {
   s.assertions = m.verdicts.outcomes().size();
   s.failures = m.verdicts.failures();
   s.faults = m.faults->applied();
+  const FindingLog& findings = m.monitor->findings();
+  for (std::size_t r = 0; r < kMasterRuleCount; ++r) {
+    const auto rule = static_cast<MasterRule>(r);
+    s.master_findings += findings.count_of(rule);
+    if (m.scenario.master_rules.of(rule) == Severity::Error) s.master_errors += findings.count_of(rule);
+  }
+  if (!m.options.master_report.empty()) {
+    std::string error = prepare_output(m.options.master_report);
+    if (error.empty()) error = write_master_report(m.options.master_report, *m.monitor);
+    if (!error.empty()) {
+      std::fprintf(m.options.out, "vplant run: %s\n", error.c_str());
+      rc = 2;
+    }
+  }
 
   if (!m.junit_path.empty()) {
     std::string error = prepare_output(m.junit_path);
-    if (error.empty()) error = write_junit(m.junit_path, m.scenario.name, m.verdicts, wall, s.simulated_s);
+    Verdicts with_rules = m.verdicts;  // the JUnit file adds one test case per master rule
+    const SourceMark& rules_mark = m.scenario.master_rules.mark;
+    add_rule_outcomes(*m.monitor, rules_mark.line ? rules_mark : SourceMark{m.scenario.file, 0, 0}, sched.now(), with_rules);
+    if (error.empty()) error = write_junit(m.junit_path, m.scenario.name, with_rules, wall, s.simulated_s);
     if (!error.empty()) {
       std::fprintf(m.options.out, "vplant run: %s\n", error.c_str());
       rc = 2;
@@ -247,12 +269,14 @@ int Runner::run() {
       std::fprintf(out, " (schedule re-anchored %llu times: simulated time %.1f ms behind the wall clock)",
                    static_cast<unsigned long long>(s.reanchors), static_cast<double>(s.slipped_us) / 1000.0);
     std::fprintf(out, "\n  assertions: %zu passed, %zu failed\n", s.assertions - s.failures, s.failures);
+    print_findings(out, *m.monitor, !m.options.master_report.empty());
     if (m.trace) std::fprintf(out, "  trace: %s\n", m.trace_path.c_str());
     if (!m.csv_path.empty()) std::fprintf(out, "  csv: %s (%zu rows)\n", m.csv_path.c_str(), m.recorder->rows());
     if (m.report)
       std::fprintf(out, "  report: %s\n",
                    (std::filesystem::path(m.options.report_dir) / "cases" / report::case_id(m.scenario.name) / "index.html").c_str());
     if (!m.junit_path.empty()) std::fprintf(out, "  junit: %s\n", m.junit_path.c_str());
+    if (!m.options.master_report.empty()) std::fprintf(out, "  master report: %s\n", m.options.master_report.c_str());
   }
   return rc;
 }

@@ -4,6 +4,7 @@
 //   2 scripted master   decides assertions on the state at `now`, sends SYNC/NMT/SDO/PDOs
 //   3 plant → devices   sensor inputs = plant outputs at `now`
 //   4 nodes             (scenario order) consume the tick's frames, sample inputs, drive outputs
+//     master monitor    the verdict on the master: SDO timeouts, device states (master_monitor.h)
 //   5 devices → plant   actuator commands for [now, now + dt]
 //   6 recorder          CSV/report row: plant state at `now`, device outputs for the tick
 //   7 plant             integrates [now, now + dt]
@@ -27,6 +28,8 @@
 
 namespace scenario {
 
+class MasterMonitor;
+
 struct RunOptions {
   std::map<std::string, std::string> can;  ///< --can BUS=IFACE
   bool realtime = false;                   ///< --realtime
@@ -35,6 +38,7 @@ struct RunOptions {
   std::optional<std::uint64_t> seed;       ///< --seed
   std::string trace, csv, junit;           ///< override the scenario's outputs
   std::string report_dir;                  ///< --report DIR: write this case into the HTML report (engine/report/)
+  std::string master_report;               ///< --master-report: the master monitor's findings as JSON
   bool progress = false;                   ///< progress line on stderr (a terminal)
   bool quiet = false;                      ///< no summary (tests, benchmarks)
   bool strict_eds = false;                 ///< --strict: EDS nodes reject CiA 306 deviations
@@ -70,6 +74,8 @@ struct RunSummary {
   std::size_t assertions = 0;
   std::size_t failures = 0;
   std::size_t faults = 0;
+  std::size_t master_findings = 0;        ///< the master monitor's findings (all rules, dropped ones too)
+  std::size_t master_errors = 0;          ///< of which of error severity
   bool interrupted = false;
 };
 
@@ -89,6 +95,8 @@ class Runner {
 
   const Verdicts& verdicts() const;
   const RunSummary& summary() const;
+  /// The verdict on the master: the findings of the master monitor (master_monitor.h).
+  const MasterMonitor& master_monitor() const;
 
  private:
   struct Impl;

@@ -15,6 +15,7 @@
 #include "sim/bus.h"
 #include "sim/can_frame.h"
 #include "sim/time.h"
+#include "engine/master_rules.h"
 #include "engine/condition.h"
 #include "engine/frame_pattern.h"
 #include "engine/signal_expression.h"
@@ -264,6 +265,7 @@ struct Scenario {
   std::vector<Step> script;
   std::vector<FaultSpec> faults;
   UiSpec ui;
+  MasterRuleSettings master_rules;  ///< `master_rules:` severities of the master monitor's rules
 };
 
 }  // namespace scenario

@@ -224,6 +224,26 @@ UiSpec read_ui(const YAML::Node& node, const std::string& file) {
   return u;
 }
 
+// `master_rules: {sync-jitter: off, sdo-abort: warning}`: a severity per rule, by name.
+MasterRuleSettings read_master_rules(const YAML::Node& node, const std::string& file) {
+  MasterRuleSettings settings;
+  settings.mark = mark_of(node, file);
+  if (!node.IsMap()) throw LoadError(settings.mark, "master_rules must be a mapping of rule names to off, warning or error");
+  std::vector<bool> seen(kMasterRuleCount, false);
+  for (const auto& kv : node) {
+    const std::string name = read_string(kv.first, file, "master_rules key");
+    const auto rule = rule_by_name(name);
+    if (!rule) throw LoadError(mark_of(kv.first, file), "unknown master rule '" + name + "' (rules: " + rule_names() + ")");
+    if (seen[static_cast<std::size_t>(*rule)]) throw LoadError(mark_of(kv.first, file), "master rule '" + name + "' given twice");
+    seen[static_cast<std::size_t>(*rule)] = true;
+    const std::string value = read_string(kv.second, file, "master_rules." + name);
+    const auto severity = severity_by_name(value);
+    if (!severity) throw LoadError(mark_of(kv.second, file), "master_rules." + name + ": '" + value + "' is not off, warning or error");
+    settings.severity[static_cast<std::size_t>(*rule)] = *severity;
+  }
+  return settings;
+}
+
 OutputSpec read_outputs(const YAML::Node& node, const std::string& file) {
   MapReader r(node, file, "outputs");
   OutputSpec o;
@@ -313,6 +333,7 @@ Scenario parse_scenario_node(const YAML::Node& root, const std::string& file, co
   if (auto f = r.get("faults")) s.faults = read_faults(f, file);
   if (auto u = r.get("ui")) s.ui = read_ui(u, file);
   r.get("matrix");  // the sweep: expanded before this by ScenarioCases (scenario_cases.h)
+  if (auto m = r.get("master_rules")) s.master_rules = read_master_rules(m, file);
   r.finish();
   if (s.name.empty()) {
     const auto slash = file.rfind('/');

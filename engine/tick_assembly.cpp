@@ -18,6 +18,8 @@ std::vector<TickComponent> tick_components(const TickParts& p) {
   // Sensors read the plant at `now`, the nodes step, their outputs drive the plant.
   order.push_back({"plant -> devices", &p.world.plant_to_devices()});
   order.push_back({"nodes", &p.nodes});
+  // The monitor judges the master by the frames and node states the tick has produced so far.
+  if (p.monitor) order.push_back({"master monitor", p.monitor});
   order.push_back({"devices -> plant", &p.world.devices_to_plant()});
   // The recorder samples at `now`, before the plant integrates over [now, now + dt].
   if (p.recorder) order.push_back({"recorder", p.recorder});

@@ -25,6 +25,7 @@ struct TickParts {
   ScriptedMaster& master;
   NodeGroup& nodes;
   sim::Steppable* caller_steps = nullptr;  ///< the library's step functions (Simulation::add_step)
+  sim::Steppable* monitor = nullptr;       ///< the verdict on the master (engine/master_monitor.h)
   sim::Steppable* recorder = nullptr;      ///< the CLI's CSV and plot samples
 };
 
@@ -34,7 +35,7 @@ struct TickComponent {
 };
 
 /// The components in the order they step: faults, master, caller steps, plant → devices, nodes,
-/// devices → plant, recorder, plant (absent parts left out).
+/// master monitor, devices → plant, recorder, plant (absent parts left out).
 std::vector<TickComponent> tick_components(const TickParts& parts);
 
 /// Adds the world's buses and tick_components(parts), in that order, to `scheduler`.

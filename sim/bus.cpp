@@ -234,6 +234,7 @@ void Bus::deliver_one(const Pending& p, Time now) {
   ++stats_.frames;
   if (p.from == kWire) ++stats_.from_wire;
   const std::string_view wire_name = transport_ ? transport_->name() : std::string_view(name_);
+  tap_sender_ = p.from;
   for (auto* tap : taps_) tap->on_bus_frame(wire_name, p.frame, now);
   if (transport_) {
     if (p.from != kWire) transport_->send(p.frame);
@@ -347,6 +348,7 @@ void Bus::complete(Time at) {
     if (f.from == kWire) ++stats_.from_wire;
     if (!taps_.empty()) {
       const std::string_view wire_name = transport_ ? transport_->name() : std::string_view(name_);
+      tap_sender_ = f.from;
       for (auto* tap : taps_) tap->on_bus_frame(wire_name, f.frame, at);
     }
     if (transport_) {

@@ -156,6 +156,9 @@ class Bus {
   }
   Transport* transport() const { return transport_.get(); }
   void add_tap(FrameTap* tap) { taps_.push_back(tap); }
+  /// While taps see a frame: the endpoint that sent it (kWire: the transport), so a tap can tell
+  /// an emulated node's frame from the master's.
+  int tap_sender() const { return tap_sender_; }
   void set_filter(FrameFilter* filter) { filter_ = filter; }
 
   const BusStats& stats() const { return stats_; }
@@ -275,6 +278,7 @@ class Bus {
   RingBuffer<WireTag> wire_tags_{8};
   std::unique_ptr<Transport> transport_;
   std::vector<FrameTap*> taps_;
+  int tap_sender_ = kWire;
   FrameFilter* filter_ = nullptr;
   BusStats stats_;
   unsigned bit_rate_kbit_ = 0;

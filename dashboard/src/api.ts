@@ -1,5 +1,5 @@
 // The control-plane API (docs/api.md) as typed calls. Every call goes to the page's own origin.
-import type { ActiveFault, ClockState, Frame, NodeInfo, OdEntry, Scenario, SdoResult, SignalBatch } from './types';
+import type { ActiveFault, ClockState, FindingsPage, Frame, NodeInfo, OdEntry, Scenario, SdoResult, SignalBatch } from './types';
 
 export class ApiError extends Error {
   constructor(readonly status: number, message: string) {
@@ -41,6 +41,7 @@ export const api = {
   setInput: (node: string, name: string, value: number) =>
     call<{ ok: boolean }>('POST', `/api/nodes/${encodeURIComponent(node)}/inputs`, { name, value }),
   clock: () => call<ClockState>('GET', '/api/clock'),
+  findings: (since: number) => call<FindingsPage>('GET', `/api/findings?since=${since}`),
   clockAction: (action: string, ms?: number) =>
     call<ClockState | { ok: boolean }>('POST', '/api/clock', ms === undefined ? { action } : { action, ms }),
 };

@@ -7,6 +7,7 @@ import { formatIndex, sdoWriteBody } from './od_input';
 import type { NodeInfo, OdEntry, Scenario } from './types';
 import { ClockControls, renderNmtControls } from './views/controls';
 import { FaultsPanel } from './views/faults_panel';
+import { FindingsView } from './views/findings_view';
 import { renderControlWordControls, renderNodeDetail } from './views/node_detail';
 import { NodeTable } from './views/node_table';
 import { OdBrowser } from './views/od_browser';
@@ -177,6 +178,15 @@ async function main(): Promise<void> {
     }
   }
 
+  const findings = new FindingsView($('findings'));
+  async function refreshFindings(): Promise<void> {
+    try {
+      findings.show(await api.findings(findings.since));
+    } catch {
+      // a run without a master monitor, or the run has ended: nothing to add
+    }
+  }
+
   const trace = new TraceView($('trace'), sc.nodes);
   let stream: EventSource | null = null;
   const plots = new Plots($('plots'), sc.signals, defaultSignals(sc.signals, sc.nodes.map((n) => n.name)), (chosen) => {
@@ -211,6 +221,7 @@ async function main(): Promise<void> {
   // Live values of the dictionary and the active faults: polled, they change rarely.
   setInterval(() => void refreshOd(), 1000);
   setInterval(() => void refreshFaults(), 2000);
+  setInterval(() => void refreshFindings(), 2000);
 }
 
 main().catch((e) => {

@@ -98,3 +98,21 @@ export interface ClockState {
 export interface ActiveFault { id: number; summary: string; since_t_us: number }
 
 export interface SignalBatch { t_us: number[]; values: Record<string, number[]> }
+
+/** GET /api/findings: the verdict on the master (docs/masters.md, "Verdict"). */
+export interface MasterFinding {
+  rule: string;
+  severity: 'warning' | 'error';
+  t_us: number;
+  bus: string;
+  node: number;
+  text: string;
+  frames: { t_us: number; from: 'master' | 'node'; frame: string }[];
+}
+export interface FindingsPage {
+  findings: MasterFinding[];
+  next: number;
+  total: number;
+  dropped: number;
+  rules: Record<string, { severity: string; count: number }>;
+}

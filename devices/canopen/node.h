@@ -102,6 +102,12 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   /// No frame in or out until `until` (e.g. while "saving to EEPROM").
   void go_silent_until(sim::Time until) { silent_until_ = until; }
   bool silent() const { return now_ < silent_until_; }
+  /// The RPDO (1-based) that a frame with this identifier reaches, 0 = none: lets a monitor of
+  /// the master check an RPDO's length against its mapping without a table of its own.
+  int rpdo_for(std::uint32_t id, bool extended) const {
+    const RouteEntry r = extended ? extended_route(id) : id < routes_.size() ? routes_[id] : RouteEntry{};
+    return r.route == Route::Rpdo ? r.index : 0;
+  }
   /// Re-reads COB-IDs from the object dictionary into the dispatch table.
   void rebuild_dispatch();
   /// A communication error (life guarding, heartbeat consumer) began / ended: the application

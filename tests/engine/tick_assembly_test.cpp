@@ -30,9 +30,10 @@ struct Machine {
         faults(world, verdicts, quiet),
         master(world, faults, verdicts, quiet),
         nodes(world) {}
-  std::vector<std::string> names(sim::Steppable* caller_steps, sim::Steppable* recorder) {
+  std::vector<std::string> names(sim::Steppable* caller_steps, sim::Steppable* recorder,
+                                 sim::Steppable* monitor = nullptr) {
     std::vector<std::string> out;
-    for (const auto& c : scenario::tick_components({world, faults, master, nodes, caller_steps, recorder}))
+    for (const auto& c : scenario::tick_components({world, faults, master, nodes, caller_steps, monitor, recorder}))
       out.emplace_back(c.name);
     return out;
   }
@@ -47,11 +48,11 @@ struct Machine {
 
 using Names = std::vector<std::string>;
 
-TEST(TickAssembly, TheCommandLineRunStepsFaultsMasterWiringNodesRecorderPlant) {
+TEST(TickAssembly, TheCommandLineRunStepsFaultsMasterWiringNodesMonitorRecorderPlant) {
   Machine m(vtest::kMachine);
-  Noop recorder;
-  EXPECT_EQ(m.names(nullptr, &recorder),
-            (Names{"faults", "master", "plant -> devices", "nodes", "devices -> plant", "recorder", "plant"}));
+  Noop recorder, monitor;
+  EXPECT_EQ(m.names(nullptr, &recorder, &monitor), (Names{"faults", "master", "plant -> devices", "nodes", "master monitor",
+                                                          "devices -> plant", "recorder", "plant"}));
 }
 
 TEST(TickAssembly, TheLibraryStepsTheCallersFunctionsAfterTheMaster) {
@@ -76,7 +77,7 @@ TEST(TickAssembly, AWorldWithoutPlantHasNoPlantStep) {
 TEST(TickAssembly, TheComponentsAreTheRunsOwnObjectsInTheSchedulersOrder) {
   Machine m(vtest::kMachine);
   Noop steps, recorder;
-  const auto order = scenario::tick_components({m.world, m.faults, m.master, m.nodes, &steps, &recorder});
+  const auto order = scenario::tick_components({m.world, m.faults, m.master, m.nodes, &steps, nullptr, &recorder});
   ASSERT_EQ(order.size(), 8u);
   EXPECT_EQ(order[0].component, &m.faults);
   EXPECT_EQ(order[1].component, &m.master);

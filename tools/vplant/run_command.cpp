@@ -28,6 +28,7 @@ struct RunArgs {
   std::string duration;
   long long seed = -1;
   std::string trace, csv, junit;
+  std::string master_report;
   bool quiet = false;
   std::string ui;
   bool ui_allow_remote = false;
@@ -71,6 +72,7 @@ int run(const RunArgs& a) {
   o.trace = a.trace;
   o.csv = a.csv;
   o.junit = a.junit;
+  o.master_report = a.master_report;
   o.quiet = a.quiet;
   o.strict_eds = a.strict;
   o.case_name = a.case_name;
@@ -125,6 +127,7 @@ Runner add_run_command(CLI::App& app) {
   app.add_option("--trace", a->trace, "write all frames in candump -L format");
   app.add_option("--csv", a->csv, "write the recorded signals as CSV (default signals: every wired port)");
   app.add_option("--junit", a->junit, "write the assertions as JUnit XML");
+  app.add_option("--master-report", a->master_report, "write the verdict on the master (its findings) as JSON");
   app.add_flag("--quiet", a->quiet, "print only failures");
   app.add_option("--ui", a->ui,
                  "[ADDR:]PORT: serve the live control plane and dashboard (default address 127.0.0.1; docs/api.md)");
