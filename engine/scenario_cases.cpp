@@ -204,7 +204,6 @@ Scenario ScenarioCases::load(std::size_t i) const {
   s.name += "[" + values_[i] + "]";
   for (std::string* path : {&s.outputs.trace, &s.outputs.junit}) *path = output_path(*path, i);
   if (s.outputs.csv) s.outputs.csv->file = output_path(s.outputs.csv->file, i);
-  for (auto& p : s.outputs.plots) p.file = output_path(p.file, i);
   return s;
 }
 

@@ -19,7 +19,8 @@ import tempfile
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from socketcand_master_test import DSV, Failure, Master, StderrReader, check, free_port  # noqa: E402
+from socketcand_harness import Failure, StderrReader, check, free_port  # noqa: E402
+from socketcand_master_test import DSV, Master  # noqa: E402
 
 try:
     import can
