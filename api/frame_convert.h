@@ -4,19 +4,17 @@
 #include <vplant/error.h>
 #include <vplant/frame.h>
 
+#include <cstdio>
 #include <string>
 
 #include "sim/can_frame.h"
 
 namespace vplant::detail {
 
-inline std::string hex(std::uint32_t v) {
-  static constexpr char digits[] = "0123456789ABCDEF";
-  std::string s;
-  do {
-    s.insert(s.begin(), digits[v & 0xF]);
-    v >>= 4;
-  } while (v != 0);
+/// `v` in upper-case hex, at least `width` digits (zero-padded), for error messages.
+inline std::string hex(std::uint64_t v, int width = 1) {
+  char s[24];
+  std::snprintf(s, sizeof s, "%0*llX", width, static_cast<unsigned long long>(v));
   return s;
 }
 

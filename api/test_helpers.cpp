@@ -7,8 +7,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 
+#include "api/frame_convert.h"
 #include "devices/canopen/sdo_abort.h"
 
 namespace vplant::test {
@@ -17,11 +17,7 @@ namespace {
 
 [[noreturn]] void fail(const std::string& reason) { throw Error("", 0, 0, reason, reason); }
 
-std::string hex(std::uint64_t v, int width) {
-  char s[24];
-  std::snprintf(s, sizeof s, "%0*llX", width, static_cast<unsigned long long>(v));
-  return s;
-}
+using detail::hex;
 
 std::uint32_t le32(const std::uint8_t* p) {
   return static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |

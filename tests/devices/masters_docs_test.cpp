@@ -27,14 +27,18 @@ std::string cell(const std::string& row, int n) {  // 0 = the label
   return c;
 }
 
+std::string masters_doc() {
+  std::ifstream file(std::string(VPLANT_SOURCE_DIR) + "/docs/masters.md");
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
 }  // namespace
 
 TEST(MastersDocs, SummaryTableMatchesTheProducts) {
-  std::ifstream file(std::string(VPLANT_SOURCE_DIR) + "/docs/masters.md");
-  ASSERT_TRUE(file) << "docs/masters.md missing";
-  std::stringstream text;
-  text << file.rdbuf();
-  const std::string doc = text.str();
+  const std::string doc = masters_doc();
+  ASSERT_FALSE(doc.empty()) << "docs/masters.md missing";
   for (const auto& [label, name] : {std::pair{"MD2", "md2"}, std::pair{"DSV", "dsv"}, std::pair{"VT-VPCD", "vtvpcd"},
                                     std::pair{"HLT 1100", "hlt1100"}, std::pair{"WDGA", "wdga"}}) {
     const std::string row = row_of(doc, label);
@@ -78,11 +82,8 @@ std::uint32_t hex_cell(const std::string& c) { return static_cast<std::uint32_t>
 TEST(MastersDocs, IdentityTableMatchesTheProducts) {
   // 1000h and 1018h as the "Identity objects" table gives them ("absent" = the sub-index does not
   // exist), and the abort of an SDO write to 1000h that the text under it names.
-  std::ifstream file(std::string(VPLANT_SOURCE_DIR) + "/docs/masters.md");
-  ASSERT_TRUE(file) << "docs/masters.md missing";
-  std::stringstream text;
-  text << file.rdbuf();
-  const std::string doc = text.str();
+  const std::string doc = masters_doc();
+  ASSERT_FALSE(doc.empty()) << "docs/masters.md missing";
   for (const char* name : {"md2", "dsv", "vtvpcd", "hlt1100", "wdga"}) {
     SCOPED_TRACE(name);
     const std::string row = row_of(doc, std::string("`") + name + "`");
