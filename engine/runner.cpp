@@ -142,7 +142,7 @@ int Runner::run() {
     std::string line = "vplant run: " + m.scenario.name + " is up:";
     for (std::size_t b = 0; b < m.world->buses().size(); ++b) {
       const auto& bus = *m.world->buses()[b];
-      line += (b ? "; bus " : " bus ") + bus.name() + " on " + (bus.transport() ? std::string(bus.transport()->name()) : "the virtual bus") + ":";
+      line += (b ? "; bus " : " bus ") + bus.name() + " on " + (bus.transport() ? bus.transport()->where() : std::string("the virtual bus")) + ":";
       for (const auto& n : m.world->nodes())
         if (n.bus == static_cast<int>(b)) line += " " + n.spec->name + "=" + std::to_string(n.node_id);
     }

@@ -35,9 +35,11 @@ class SocketcandClient final : public QueuedTransport {
   bool connected() const { return connected_.load(std::memory_order_acquire); }
   /// Frames of the bus that could not reach the remote bus (not connected, or it does not read).
   std::uint64_t wire_dropped() const { return wire_dropped_.load(std::memory_order_relaxed); }
+  std::string where() const override { return where_; }
 
  private:
   SocketcandClient(std::string where, std::string channel, ResolvedAddress address);
+
   void run();
   // The socket, or -1 with `error`; what the server sent after the handshake stays in `in`.
   int connect_and_handshake(socketcand::Splitter& in, std::string& error);

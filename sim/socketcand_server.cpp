@@ -77,6 +77,7 @@ std::unique_ptr<SocketcandServer> SocketcandServer::open(const std::string& chan
   if (bound.ss_family == AF_INET) port = ntohs(reinterpret_cast<const sockaddr_in*>(&bound)->sin_port);
   if (bound.ss_family == AF_INET6) port = ntohs(reinterpret_cast<const sockaddr_in6*>(&bound)->sin6_port);
   std::unique_ptr<SocketcandServer> server(new SocketcandServer(channel, channel, fd, port, limits));
+  server->address_ = where;
   if (!server->eventfds_ok()) {
     error = std::string("socketcand server: eventfd: ") + std::strerror(errno);
     return nullptr;

@@ -60,6 +60,8 @@ class SocketcandServer final : public QueuedTransport {
   ~SocketcandServer() override;
 
   std::uint16_t port() const { return port_; }
+  /// "socketcand 127.0.0.1:29536 channel main": what a master connects to.
+  std::string where() const override { return "socketcand " + address_ + " channel " + channel_; }
   /// Clients connected right now, and clients closed for a protocol error or for not reading.
   int client_count() const { return clients_now_.load(std::memory_order_relaxed); }
   std::uint64_t clients_dropped() const { return clients_dropped_.load(std::memory_order_relaxed); }
@@ -67,6 +69,7 @@ class SocketcandServer final : public QueuedTransport {
  private:
   struct Client;
   SocketcandServer(std::string name, std::string channel, int listen_fd, std::uint16_t port, Limits limits);
+  std::string address_;  // the listening socket's address, "127.0.0.1:29536"
   /// Closes the clients whose handshake or idle time is up; returns the ms until the next such
   /// deadline (-1: none).
   int expire_clients(std::int64_t now_ms);

@@ -20,8 +20,11 @@ struct TransportStats {
 class Transport {
  public:
   virtual ~Transport() = default;
-  /// Human-readable endpoint name, e.g. "vcan0".
+  /// Human-readable endpoint name, e.g. "vcan0" (also the interface field of candump traces).
   virtual std::string_view name() const = 0;
+  /// Where a master finds this transport, for start lines and summaries (e.g. "socketcand
+  /// 127.0.0.1:29536 channel main"); by default the name.
+  virtual std::string where() const { return std::string(name()); }
   /// Non-blocking send. Never blocks the scheduler: a busy link queues and retries in service().
   virtual void send(const CanFrame& frame) = 0;
   /// Non-blocking receive of one frame; false when nothing is pending.
