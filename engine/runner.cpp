@@ -135,7 +135,18 @@ int Runner::run() {
   auto& sched = *m.scheduler;
   const bool realtime = sched.mode() == sim::ClockMode::RealTime;
   if (m.options.extension) m.options.extension->attach(RunContext{m.scenario, *m.world, *m.faults, sched, m.monitor.get()});
-  for (auto& n : m.world->nodes()) n.device->power_on(sched.now());
+  // Nodes power on now, or (--power-on-first-client) when a client listens on their bus.
+  std::vector<std::size_t> waiting_buses;
+  for (std::size_t b = 0; b < m.world->buses().size(); ++b) {
+    const auto* t = m.world->buses()[b]->transport();
+    if (m.options.power_on_first_client && t && !t->peer_listening()) waiting_buses.push_back(b);
+  }
+  const auto power_bus_nodes = [&m, &sched](std::size_t bus) {
+    for (auto& n : m.world->nodes())
+      if (n.bus == static_cast<int>(bus)) n.device->power_on(sched.now());
+  };
+  for (std::size_t b = 0; b < m.world->buses().size(); ++b)
+    if (std::find(waiting_buses.begin(), waiting_buses.end(), b) == waiting_buses.end()) power_bus_nodes(b);
   // One line when the nodes are up, so a master programmer (real time, or an external master with
   // --no-script) knows where to connect before anything else happens.
   if (!m.options.quiet && (realtime || m.options.no_script)) {
@@ -146,6 +157,7 @@ int Runner::run() {
       for (const auto& n : m.world->nodes())
         if (n.bus == static_cast<int>(b)) line += " " + n.spec->name + "=" + std::to_string(n.node_id);
     }
+    if (!waiting_buses.empty()) line += "; nodes power on when a client opens their bus";
     std::fprintf(m.options.out, "%s%s\n", line.c_str(), realtime && !m.duration ? " (Ctrl-C stops)" : "");
     std::fflush(m.options.out);
   }
@@ -165,6 +177,14 @@ int Runner::run() {
   while (!sched.stop_requested()) {
     const bool end = m.duration ? sched.stats().ticks >= limit_ticks : (m.master->has_script() && m.master->finished());
     if (m.options.extension ? !m.options.extension->before_tick(end) : end) break;
+    if (!waiting_buses.empty()) {
+      std::erase_if(waiting_buses, [&](std::size_t b) {
+        if (!m.world->buses()[b]->transport()->peer_listening()) return false;
+        power_bus_nodes(b);
+        m.log(sched.now(), "a client listens on bus " + m.world->buses()[b]->name() + ": its nodes power on");
+        return true;
+      });
+    }
     sched.run_ticks(1);
     if (m.options.progress && (sched.stats().ticks & 255) == 0) {
       const double w = wall_now();

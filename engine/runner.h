@@ -42,6 +42,9 @@ struct RunOptions {
   bool progress = false;                   ///< progress line on stderr (a terminal)
   bool quiet = false;                      ///< no summary (tests, benchmarks)
   bool strict_eds = false;                 ///< --strict: EDS nodes reject CiA 306 deviations
+  /// --power-on-first-client: the nodes of a bus served over socketcand stay unpowered until its
+  /// first client is in raw mode, so an external master sees every boot-up.
+  bool power_on_first_client = false;
   bool rt = false;                         ///< --rt: SCHED_FIFO + locked memory for the scheduler's thread (sim/realtime_setup.h)
   std::FILE* out = stderr;                 ///< summary, failures, log lines
   /// run_scenario_file: only this case of the file's matrix (`vplant run --case`); "" = all.

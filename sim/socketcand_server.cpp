@@ -248,6 +248,7 @@ void SocketcandServer::handle(Client& c, std::string_view text) {
       enqueue(c, "< ok >");
       flush(c);
       c.settle_until_ms = monotonic_ms() + kRawmodeSettleMs;
+      raw_client_seen_.store(true, std::memory_order_release);
       return;
     case Kind::Bcmmode:
       c.mode = Client::Mode::Bcm;

@@ -64,6 +64,8 @@ class SocketcandServer final : public QueuedTransport {
   std::string where() const override { return "socketcand " + address_ + " channel " + channel_; }
   /// Clients connected right now, and clients closed for a protocol error or for not reading.
   int client_count() const { return clients_now_.load(std::memory_order_relaxed); }
+  /// True from the first client's `< rawmode >` on (it receives the bus's frames from then).
+  bool peer_listening() const override { return raw_client_seen_.load(std::memory_order_acquire); }
   std::uint64_t clients_dropped() const { return clients_dropped_.load(std::memory_order_relaxed); }
 
  private:
@@ -94,6 +96,7 @@ class SocketcandServer final : public QueuedTransport {
   std::vector<std::unique_ptr<Client>> clients_;  // server thread only
   std::uint32_t next_client_id_ = 1;  // server thread only
   std::atomic<int> clients_now_{0};
+  std::atomic<bool> raw_client_seen_{false};
   std::atomic<std::uint64_t> clients_dropped_{0};
   std::thread thread_;
 };

@@ -25,6 +25,10 @@ class Transport {
   /// Where a master finds this transport, for start lines and summaries (e.g. "socketcand
   /// 127.0.0.1:29536 channel main"); by default the name.
   virtual std::string where() const { return std::string(name()); }
+  /// Whether a peer receives the bus's frames now: a served socketcand bus says so once a client
+  /// has put it in raw mode (so a run can power its nodes then and the client sees every boot-up);
+  /// an interface is always there. Read between ticks: an atomic load, no system call.
+  virtual bool peer_listening() const { return true; }
   /// Non-blocking send. Never blocks the scheduler: a busy link queues and retries in service().
   virtual void send(const CanFrame& frame) = 0;
   /// Non-blocking receive of one frame; false when nothing is pending.

@@ -39,6 +39,7 @@ struct RunArgs {
   std::string report;
   bool report_no_index = false;
   bool rt = false;
+  bool power_on_first_client = false;
 };
 
 bool stop_active_run() {
@@ -78,6 +79,7 @@ int run(const RunArgs& a) {
   o.case_name = a.case_name;
   o.report_dir = a.report;
   o.rt = a.rt;
+  o.power_on_first_client = a.power_on_first_client;
   o.progress = !a.quiet && ::isatty(STDERR_FILENO);
   // The control plane: --ui overrides the scenario's `ui:`; made once the scenario is loaded.
   std::unique_ptr<control::ControlPlane> ui;
@@ -141,6 +143,9 @@ Runner add_run_command(CLI::App& app) {
   app.add_flag("--rt", a->rt,
                "real time: run the scheduler's thread SCHED_FIFO (priority 49) with memory locked, where permitted "
                "(docs/runtime.md, \"Real-time priority\")");
+  app.add_flag("--power-on-first-client", a->power_on_first_client,
+               "a bus served over socketcand: power its nodes when the first client opens it (raw mode), so the "
+               "master sees every boot-up (docs/remote.md)");
   app.add_flag("--strict", a->strict, "EDS nodes: reject the CiA 306 deviations that are otherwise loaded with a warning");
   // `vplant test` runs each case of a sweep as its own process (docs/scenarios.md, "matrix").
   app.add_option("--case", a->case_name, "run only this case of the file's matrix")->group("");
