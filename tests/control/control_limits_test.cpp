@@ -122,7 +122,7 @@ TEST_F(ControlLimits, ActiveFaultsAreBounded) {
   std::vector<int> ids;
   int status = 200;
   for (int i = 0; i < 300 && status == 200; ++i) {
-    const auto r = p().post("/api/faults", {{"kind", "wire"}, {"match", 0x7E0}, {"action", "drop"}});
+    const auto r = p().post("/api/faults", {{"drop", {{"id", "0x7E0"}}}});
     ASSERT_TRUE(r);
     status = r->status;
     if (status == 200) ids.push_back(json::parse(r->body)["id"].get<int>());

@@ -63,7 +63,9 @@ check "sweep 0.4 fails" has "FAIL    cylinder-sweep[plant.pump.initial_swivel_an
 check "sweep JUnit: a testsuite per case" test "$(grep -c '<testsuite ' sweep.xml)" -eq 3
 check "sweep JUnit: the failures with file:line:col" \
   test "$(grep -c "cylinder-sweep.yaml:$((line - 1)):5: at t=" sweep.xml)" -eq 2
-check "sweep JUnit: two failures counted" has '<testsuites tests="3" failures="2" errors="0"' sweep.xml
+# Each case: its assertion plus one test case per rule of the verdict on the master (docs/masters.md).
+check "sweep JUnit: two failures counted" has '<testsuites tests="36" failures="2" errors="0"' sweep.xml
+check "sweep JUnit: a testsuite per case" test "$(grep -c '^  <testsuite name=' sweep.xml)" -eq 3
 check "vplant run runs every combination" run_rc 1 run.txt "$vplant" run "$data/cases/cylinder-sweep.yaml"
 check "vplant run: three summaries" test "$(grep -c '^vplant run: cylinder-sweep\[' run.txt)" -eq 3
 check "vplant run --case runs one" run_rc 0 case.txt "$vplant" run "$data/cases/cylinder-sweep.yaml" --quiet \
