@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/junit_writer.h"
 #include "sim/can_frame.h"
 
 #if VPLANT_HAVE_DASHBOARD
@@ -82,20 +83,6 @@ std::string write_assets(const fs::path& dir) {
 #endif
 }
 
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 // JSON inside <script type="application/json">: "</script" or "<!--" must not appear in it.
 std::string script_json(const json& j) {
   std::string text = j.dump(-1, ' ', false, json::error_handler_t::replace);
@@ -109,10 +96,11 @@ std::string script_json(const json& j) {
   return out;
 }
 
+// The title goes through the JUnit writer's XML escape, which serves HTML text as well.
 std::string page(const std::string& title, const std::string& assets, const std::string& data_id, const json& data) {
   return "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
-         html_escape(title) + "</title>\n<link rel=\"icon\" href=\"data:,\">\n<link rel=\"stylesheet\" href=\"" + assets +
+         xml_escape(title) + "</title>\n<link rel=\"icon\" href=\"data:,\">\n<link rel=\"stylesheet\" href=\"" + assets +
          "report.css\">\n<script defer src=\"" + assets + "report.js\"></script>\n</head>\n<body>\n<script type=\"application/json\" id=\"" +
          data_id + "\">" + script_json(data) +
          "</script>\n<main id=\"report\"><noscript>The report needs JavaScript.</noscript></main>\n</body>\n</html>\n";
