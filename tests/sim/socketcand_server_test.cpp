@@ -12,7 +12,9 @@
 
 #include <atomic>
 #include <chrono>
+#include <fstream>
 #include <functional>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -62,6 +64,8 @@ class TcpClient {
     return n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : "";
   }
   void send(std::string_view text) { ASSERT_EQ(::send(fd_, text.data(), text.size(), MSG_NOSIGNAL), (ssize_t)text.size()); }
+  /// send() for a client that may already have been closed by the server (fuzzing).
+  void send_anyway(std::string_view text) { (void)::send(fd_, text.data(), text.size(), MSG_NOSIGNAL | MSG_DONTWAIT); }
   /// The next message, or "" on EOF / timeout (3 s).
   std::string next() {
     for (;;) {
@@ -643,4 +647,111 @@ TEST(TransportFactory, ParsesEverySpelling) {
   EXPECT_FALSE(sim::open_transport("main", "socketcand:127.0.0.1:0/", error));
   EXPECT_TRUE(sim::is_socketcand_spec("socketcand:x:1"));
   EXPECT_FALSE(sim::is_socketcand_spec("vcan0"));
+}
+
+namespace {
+
+// A seeded generator of socketcand lines for the robustness test: well-formed messages, the same
+// with one or more mutations (a byte changed, inserted or cut, a field repeated, a number
+// stretched), and noise. Deterministic for a seed, so a failure is reproduced by its seed.
+class LineFuzzer {
+ public:
+  explicit LineFuzzer(std::uint32_t seed) : rng_(seed) {}
+  std::string next() {
+    static const char* const kValid[] = {
+        "< open main >", "< rawmode >", "< bcmmode >", "< echo >", "< send 601 8 40 0 10 0 0 0 0 0 >",
+        "< send 705 0 >", "< send 705 1 >", "< sendrtr 705 1 >", "< send 80 0 >", "< send 1FFFFFFF 2 1 2 >",
+        "< open can0 >", "< add 1 0 123 0 >", "< frame 123 1.0 00 >", "< hi >", "< subscribe 0 0 123 >"};
+    std::string s = kValid[pick(std::size(kValid))];
+    switch (pick(6)) {
+      case 0: return s;  // as it is
+      case 1: return mutate(s, 1);
+      case 2: return mutate(s, 1 + pick(8));
+      case 3: return s.substr(0, pick(s.size() + 1));  // cut short
+      case 4: return "< send " + number() + " " + number() + " " + number() + " " + number() + " >";
+      default: return noise();
+    }
+  }
+
+ private:
+  std::size_t pick(std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng_); }
+  char byte() { return static_cast<char>(pick(256)); }
+  std::string number() {
+    static const char* const kNumbers[] = {"0", "-1", "8", "9", "FFFFFFFF", "100000000", "7FF", "800", "G", "",
+                                           "18446744073709551616", "0x10", "1e9"};
+    return kNumbers[pick(std::size(kNumbers))];
+  }
+  std::string noise() {
+    std::string s(pick(200), ' ');
+    for (auto& c : s) c = byte();
+    return s;
+  }
+  std::string mutate(std::string s, std::size_t times) {
+    for (std::size_t i = 0; i < times && !s.empty(); ++i) {
+      const std::size_t at = pick(s.size());
+      switch (pick(4)) {
+        case 0: s[at] = byte(); break;
+        case 1: s.insert(at, 1, "<> 0F"[pick(5)]); break;
+        case 2: s.erase(at, 1 + pick(4)); break;
+        default: s.insert(at, s.substr(at, pick(40))); break;
+      }
+    }
+    return s;
+  }
+  std::mt19937 rng_;
+};
+
+std::size_t resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  std::size_t pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return resident * static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+}
+
+}  // namespace
+
+// Robustness (issue 25): seeded batches of abusive socketcand lines from clients that never read.
+// After each batch the server still serves a well-behaved client both ways, holds no more than its
+// client slots, and the process's resident memory stays under 256 MiB (docs/remote.md, "Slots").
+TEST(SocketcandServerRobustness, SeededAbusiveLinesLeaveTheServerServing) {
+  std::string error;
+  sim::SocketcandServer::Limits limits;
+  limits.handshake_ms = 200;  // fuzz clients that never open are gone quickly
+  auto server = sim::SocketcandServer::open("main", sim::TcpEndpoint{"127.0.0.1", 0}, error, limits);
+  ASSERT_TRUE(server) << error;
+  TcpClient good(server->port());
+  good.handshake();
+  const std::size_t rss_bound = 256u << 20;
+  for (std::uint32_t seed = 1; seed <= 24; ++seed) {
+    LineFuzzer fuzz(seed);
+    {
+      std::vector<std::unique_ptr<TcpClient>> abusers;
+      for (int c = 0; c < 4; ++c) abusers.push_back(std::make_unique<TcpClient>(server->port()));
+      for (int line = 0; line < 60; ++line) {
+        auto& a = *abusers[static_cast<std::size_t>(line) % abusers.size()];
+        a.send_anyway(fuzz.next() + (line % 3 ? "" : "\n"));
+      }
+      // Whatever the abusers got onto the bus is carried (as a bus would) and counted.
+      sim::CanFrame f;
+      for (int i = 0; i < 1000 && carry_within(*server, f, 20); ++i) {
+      }
+      EXPECT_LE(server->client_count(), sim::SocketcandServer::kMaxClients) << "seed " << seed;
+    }  // the abusers disconnect
+    // The well-behaved client still has the bus both ways.
+    good.send("< send 601 8 40 0 10 0 0 0 0 0 >");
+    sim::CanFrame f;
+    bool got_sdo = false;
+    for (int i = 0; i < 100 && !got_sdo && carry_within(*server, f, 1000); ++i) got_sdo = f == kSdo;
+    EXPECT_TRUE(got_sdo) << "seed " << seed << ": the good client's frame did not reach the bus";
+    server->send(sim::CanFrame::data_frame(0x7AB, {static_cast<std::uint8_t>(seed)}));  // an identifier no line uses
+    server->service(sim::Time{});
+    std::string seen;
+    for (int i = 0; i < 100; ++i) {
+      seen = good.next();
+      if (seen.empty() || seen.find("< frame 7AB ") == 0) break;
+    }
+    EXPECT_EQ(seen.substr(0, 12), "< frame 7AB ") << "seed " << seed;
+    EXPECT_LT(resident_bytes(), rss_bound) << "seed " << seed;
+  }
+  EXPECT_TRUE(wait_for([&] { return server->client_count() == 1; }));
 }
