@@ -20,16 +20,23 @@ import time
 
 
 def measure(vplant, scen, attack, dur):
-    s = socket.socket(); s.bind(("127.0.0.1", 0)); port = s.getsockname()[1]; s.close()
+    with socket.socket() as s:  # a free port
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
     p = subprocess.Popen([vplant, "run", scen, "--ui", f"127.0.0.1:{port}", "--ui-run", "--ui-speed", "0", "--duration", dur, "--quiet"],
                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     def clock():
         c = http.client.HTTPConnection("127.0.0.1", port, timeout=2)
         c.request("GET", "/api/clock", headers={"Host": f"127.0.0.1:{port}"})
-        r = json.loads(c.getresponse().read()); c.close(); return r
+        r = json.loads(c.getresponse().read())
+        c.close()
+        return r
     for _ in range(100):
-        try: clock(); break
-        except Exception: time.sleep(0.05)
+        try:
+            clock()
+            break
+        except OSError:
+            time.sleep(0.05)
     stop = False
     socks = []
     sent = [0]
@@ -43,27 +50,41 @@ def measure(vplant, scen, attack, dur):
                                    bytes(rng.randrange(256) for _ in range(300)),
                                    b"POST /api/nmt HTTP/1.1\r\nHost: 127.0.0.1\r\nTransfer-Encoding: chunked\r\n\r\n" + b"ffff\r\n" + b"a" * 65535 + b"\r\n" * 2,
                                    b"GET /assets/app.js HTTP/1.1\r\nHost: 127.0.0.1\r\nRange: bytes=" + b"0-," * 2000 + b"0-\r\n\r\n"])
-                c.sendall(junk); sent[0] += 1; c.settimeout(0.2)
-                try: c.recv(65536)
-                except Exception: pass
+                c.sendall(junk)
+                sent[0] += 1
+                c.settimeout(0.2)
+                try:
+                    c.recv(65536)
+                except OSError:
+                    pass
                 c.close()
-            except Exception:
+            except OSError:
                 time.sleep(0.01)
     if attack:
         for _ in range(500):
-            try: socks.append(socket.create_connection(("127.0.0.1", port), timeout=1))
-            except Exception: break
+            try:
+                socks.append(socket.create_connection(("127.0.0.1", port), timeout=1))
+            except OSError:
+                break  # the listen queue is full: hold what is open
         th = [threading.Thread(target=attacker, args=(i,)) for i in range(2)]
-        for t in th: t.start()
-    t0 = time.monotonic(); c0 = clock()["t_us"]
+        for t in th:
+            t.start()
+    t0 = time.monotonic()
+    c0 = clock()["t_us"]
     while True:
         r = clock()
-        if r["end_reached"] or r["paused"]: break
+        if r["end_reached"] or r["paused"]:
+            break
         time.sleep(0.05)
     wall = time.monotonic() - t0
     stop = True
     rss = int(open(f"/proc/{p.pid}/status").read().split("VmRSS:")[1].split()[0])
-    p.send_signal(2); p.wait()
+    p.send_signal(2)
+    p.wait()
+    for t in th if attack else []:
+        t.join()
+    for c in socks:
+        c.close()
     print(f"attack={attack} silent={len(socks)} abusive requests={sent[0]} simulated {(r['t_us']-c0)/1e6:.1f} s in {wall:.2f} s wall = {(r['t_us']-c0)/1e6/wall:.0f}x, RSS {rss/1024:.0f} MB")
 
 
