@@ -12,6 +12,7 @@
 
 #include "devices/canopen/node.h"
 #include "devices/profile_status.h"
+#include "devices/transition_log.h"
 #include "sim/ports.h"
 
 namespace devices {
@@ -60,6 +61,13 @@ class Device {
   /// counters, non-volatile memory) override and keep it.
   virtual void power_off() { node().power_off(); }
   virtual void power_on(sim::Time now) { node().power_on(now); }
+
+  /// Every state change of this device's state machines (NMT, profile, product), oldest first.
+  /// Read it between ticks (the scheduler's thread writes it).
+  const TransitionLog& transition_log() const { return transition_log_; }
+
+ protected:
+  TransitionLog transition_log_;
 };
 
 }  // namespace devices
