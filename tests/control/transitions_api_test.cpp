@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
+#include <mutex>
+#include <thread>
 
 #include "engine/environment.h"
 #include "engine/scenario_loader.h"
@@ -376,6 +379,45 @@ TEST_F(TransitionsApi, MachinesDescribeStatesAndEdges) {
   EXPECT_EQ(n["state"], "PRE-OPERATIONAL");
   EXPECT_EQ(n["states"].size(), 5u);
   EXPECT_FALSE(n["note"].get<std::string>().empty());
+}
+
+// The stream carries each transition as its own event, named by node.
+TEST_F(TransitionsApi, StreamCarriesTransitionEvents) {
+  nmt("start", 0);
+  p().run_ms(5);
+  std::string stream;
+  std::mutex mu;
+  std::atomic<bool> stop{false};
+  std::thread reader([&] {
+    httplib::Client sse("127.0.0.1", p().port());
+    sse.set_read_timeout(5, 0);
+    sse.Get("/api/events", [&](const char* data, std::size_t n) {
+      std::lock_guard lk(mu);
+      stream.append(data, n);
+      return !stop.load();
+    });
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(150));
+  sdo("dsv", 0x6040, 0, 0x0007);
+  p().run_ms(5);
+  bool seen = false;
+  for (int i = 0; i < 100 && !seen; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    std::lock_guard lk(mu);
+    seen = stream.find("\"TR_4\"") != std::string::npos;
+  }
+  stop = true;
+  reader.join();
+  ASSERT_TRUE(seen) << stream.substr(0, 2000);
+  const auto at = stream.find("event: transition\ndata: ");
+  ASSERT_NE(at, std::string::npos);
+  const auto start = at + std::string("event: transition\ndata: ").size();
+  const auto j = json::parse(stream.substr(start, stream.find('\n', start) - start));
+  EXPECT_EQ(j["node"], "dsv");
+  EXPECT_EQ(j["machine"], "dsp408");
+  EXPECT_EQ(j["transition"], "TR_2");
+  EXPECT_EQ(j["cause"], "control_word");
+  EXPECT_FALSE(j["evidence"].get<std::string>().empty());
 }
 
 }  // namespace

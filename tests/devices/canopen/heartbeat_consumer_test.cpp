@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "devices/transition_log.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -23,6 +24,28 @@ TEST(HeartbeatConsumer, StartsAtFirstHeartbeatAndTimesOut) {
   EXPECT_EQ(h.take(), Frames{Frame(0x085, {0x30, 0x81, 0x11, 0, 0, 0, 0, 0})});
   h.send(0x720, {0x05});
   EXPECT_EQ(h.take(), Frames{Frame(0x085, {0, 0, 0, 0, 0, 0, 0, 0})});
+}
+
+// The 1029h:01 reaction names the missed producer: not an NMT command.
+TEST(HeartbeatConsumer, TimeoutIsTheCauseOfTheErrorBehaviour) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  devices::TransitionLog log;
+  h.node().set_transition_log(&log);
+  h.power_on();
+  ASSERT_EQ(h.write(0x1029, 1, 0, 1), 0u);  // 0: Operational → Pre-operational
+  ASSERT_EQ(h.write(0x1016, 1, (0x20u << 16) | 150u, 4), 0u);
+  h.nmt(0x01, 5);
+  h.send(0x720, {0x05});
+  const auto before = log.last_seq();
+  h.run_ms(200);
+  std::vector<devices::Transition> t;
+  log.for_each_after(before, [&](const devices::Transition& e) { t.push_back(e); });
+  ASSERT_EQ(t.size(), 1u);
+  EXPECT_EQ(t[0].from, "OPERATIONAL");
+  EXPECT_EQ(t[0].to, "PRE-OPERATIONAL");
+  EXPECT_EQ(t[0].transition, "1029h:01");
+  EXPECT_EQ(t[0].cause, devices::TransitionCause::HeartbeatTimeout);
+  EXPECT_EQ(t[0].value, 0x20u);
 }
 
 namespace {

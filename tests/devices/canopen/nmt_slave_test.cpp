@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "devices/transition_log.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -101,4 +102,46 @@ TEST(NmtSlave, ServicesFollowTheState) {
   EXPECT_FALSE(h.read(0x1000, 0).has_value());
   h.send(Frame::remote(0x705, 1));
   EXPECT_EQ(h.take(), Frames{Frame(0x705, {0x04})});
+}
+
+// The NMT machine's transition log: each change with its command, the sender and the boot-up
+// that a reset starts (CiA 301 names; OFF for power).
+TEST(NmtSlave, TransitionsAreRecordedWithTheirCause) {
+  vtest::CanopenHarness h(vtest::make_generic_od(), {}, 5);
+  devices::TransitionLog log;
+  h.node().set_transition_log(&log);
+  h.power_on();
+  h.nmt(0x01, 5);
+  h.nmt(0x02, 0);
+  h.nmt(0x82, 5);
+  h.run_ms(10);
+  std::vector<devices::Transition> t;
+  log.for_each_after(0, [&](const devices::Transition& e) { t.push_back(e); });
+  ASSERT_EQ(t.size(), 6u);
+  EXPECT_EQ(t[0].from, "OFF");
+  EXPECT_EQ(t[0].to, "INITIALISING");
+  EXPECT_EQ(t[0].cause, devices::TransitionCause::Boot);
+  EXPECT_EQ(t[1].transition, "boot-up");
+  EXPECT_EQ(t[1].to, "PRE-OPERATIONAL");
+  EXPECT_EQ(t[2].transition, "NMT 01h");
+  EXPECT_EQ(t[2].to, "OPERATIONAL");
+  EXPECT_EQ(t[2].cause, devices::TransitionCause::NmtCommand);
+  EXPECT_EQ(t[2].value, 0x01u);
+  EXPECT_EQ(t[2].detail, "the master");
+  EXPECT_EQ(t[3].transition, "NMT 02h");
+  EXPECT_EQ(t[3].to, "STOPPED");
+  EXPECT_EQ(t[4].transition, "NMT 82h");
+  EXPECT_EQ(t[4].from, "STOPPED");
+  EXPECT_EQ(t[4].to, "INITIALISING");
+  EXPECT_EQ(t[5].transition, "boot-up");
+  EXPECT_EQ(t[5].cause, devices::TransitionCause::NmtCommand);  // the boot-up the reset started
+  EXPECT_EQ(t[5].value, 0x82u);
+  for (const auto& e : t) EXPECT_EQ(e.machine, "nmt");
+
+  h.node().power_off();
+  std::vector<devices::Transition> off;
+  log.for_each_after(6, [&](const devices::Transition& e) { off.push_back(e); });
+  ASSERT_EQ(off.size(), 1u);
+  EXPECT_EQ(off[0].to, "OFF");
+  EXPECT_EQ(off[0].cause, devices::TransitionCause::Power);
 }

@@ -179,3 +179,102 @@ TEST_F(Fixture, StrictResetSourcesOption) {
   dsm.write_control_word(0x000B);    // TR_11
   EXPECT_EQ(sw(), 0xB);
 }
+
+// ---- the transition log: each step on its own, named as the manual names it, with its cause ----
+
+namespace {
+struct Recorded : ::testing::Test {
+  Recorded() {
+    dsm.set_recorder("dsp408", [this](const devices::Transition& t) { log.push_back(t); });
+    dsm.power_on();
+  }
+  std::vector<std::string_view> names() const {
+    std::vector<std::string_view> out;
+    for (const auto& t : log) out.push_back(t.transition);
+    return out;
+  }
+  DeviceStateMachine dsm;
+  std::vector<devices::Transition> log;
+};
+using Names = std::vector<std::string_view>;
+}  // namespace
+
+TEST_F(Recorded, PowerOnIsTr0FromOffThenTr1) {
+  EXPECT_EQ(names(), (Names{"TR_0", "TR_1"}));
+  EXPECT_EQ(log[0].from, "OFF");
+  EXPECT_EQ(log[0].to, "NOT_READY");
+  EXPECT_EQ(log[1].to, "INIT");
+  EXPECT_EQ(log[0].cause, devices::TransitionCause::Boot);
+  EXPECT_EQ(log[0].machine, "dsp408");
+}
+
+TEST_F(Recorded, ZeroInActiveIsTr5Tr6Tr7WithTheControlWord) {
+  dsm.write_control_word(0x0007, "RPDO");
+  log.clear();
+  dsm.write_control_word(0x0000, "SDO");
+  ASSERT_EQ(names(), (Names{"TR_5", "TR_6", "TR_7"}));
+  for (const auto& t : log) {
+    EXPECT_EQ(t.cause, devices::TransitionCause::ControlWord);
+    EXPECT_EQ(t.value, 0u);
+    EXPECT_EQ(t.detail, "SDO");
+  }
+  EXPECT_EQ(log[0].from, "DEVICE_MODE_ACTIVE");
+  EXPECT_EQ(log[2].to, "INIT");
+}
+
+TEST_F(Recorded, ForcedInitIsTr567WithTheCallersCause) {
+  dsm.write_control_word(0x0007);
+  log.clear();
+  dsm.force_init({devices::TransitionCause::NmtCommand, 0x81, "the master"});
+  ASSERT_EQ(names(), (Names{"TR_567"}));
+  EXPECT_EQ(log[0].cause, devices::TransitionCause::NmtCommand);
+  EXPECT_EQ(log[0].value, 0x81u);
+  dsm.write_control_word(0x0007);
+  log.clear();
+  dsm.set_enable_input(false);
+  ASSERT_EQ(names(), (Names{"TR_567"}));
+  EXPECT_EQ(log[0].cause, devices::TransitionCause::Input);
+  EXPECT_EQ(log[0].detail, "enable input");
+}
+
+TEST_F(Recorded, ErrorIsTr8Tr12WithTheEmcyCodeAndResetIsTr10) {
+  dsm.write_control_word(0x0001);
+  log.clear();
+  dsm.error({devices::TransitionCause::DeviceFault, 0x5000, {}});
+  ASSERT_EQ(names(), (Names{"TR_8", "TR_12"}));
+  EXPECT_EQ(log[1].to, "FAULT");
+  EXPECT_EQ(log[0].value, 0x5000u);
+  log.clear();
+  dsm.write_control_word(0x0009);  // R edge, H = 0
+  ASSERT_EQ(names(), (Names{"TR_10"}));
+  EXPECT_EQ(log[0].cause, devices::TransitionCause::ControlWord);
+  EXPECT_EQ(log[0].value, 0x0009u);
+}
+
+TEST_F(Recorded, FaultHoldIsTr9AndResetWithHoldIsTr11) {
+  dsm.set_fault_hold(true);
+  dsm.write_control_word(0x0003);
+  log.clear();
+  dsm.forced_fault(false, {devices::TransitionCause::NmtCommand, 0x02, "the master"});
+  ASSERT_EQ(names(), (Names{"TR_8", "TR_9"}));
+  EXPECT_EQ(log[0].cause, devices::TransitionCause::NmtCommand);
+  log.clear();
+  dsm.write_control_word(0x000B);  // R edge, H = 1
+  EXPECT_EQ(names(), (Names{"TR_11"}));
+}
+
+TEST_F(Recorded, PowerOffIsRecordedAsOffAndTheNextPowerOnStartsFromOff) {
+  dsm.write_control_word(0x0007);
+  log.clear();
+  dsm.power_off();
+  EXPECT_TRUE(dsm.off());
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_EQ(log[0].from, "DEVICE_MODE_ACTIVE");
+  EXPECT_EQ(log[0].to, "OFF");
+  EXPECT_EQ(log[0].cause, devices::TransitionCause::Power);
+  log.clear();
+  dsm.power_on({devices::TransitionCause::Power, 1, {}});
+  EXPECT_EQ(names(), (Names{"TR_0", "TR_1"}));
+  EXPECT_EQ(log[0].from, "OFF");
+  EXPECT_FALSE(dsm.off());
+}
