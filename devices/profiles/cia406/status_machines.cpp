@@ -46,8 +46,12 @@ void append_status_machines(const canopen::Node& node, const StatusBitNames& nam
 }
 
 void StatusRecorder::check() {
+  if (!bound_) {  // the dictionary's entries stay where they are: looked up once, not per tick
+    for (std::size_t k = 0; k < kWords.size(); ++k) entries_[k] = node_.od().entry(kWords[k].index, 0);
+    bound_ = true;
+  }
   for (std::size_t k = 0; k < kWords.size(); ++k) {
-    const std::uint16_t now = word(node_.od(), kWords[k].index);
+    const std::uint16_t now = entries_[k] ? entries_[k]->as<std::uint16_t>() : std::uint16_t{0};
     const std::uint16_t changed = now ^ last_[k];
     if (changed == 0) continue;
     last_[k] = now;

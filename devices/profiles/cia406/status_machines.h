@@ -35,6 +35,8 @@ class StatusRecorder {
   canopen::Node& node_;
   StatusBitNames names_;
   std::uint16_t last_[3] = {0, 0, 0};
+  const canopen::OdEntry* entries_[3] = {nullptr, nullptr, nullptr};  ///< found at the first check
+  bool bound_ = false;
 };
 
 }  // namespace cia406
