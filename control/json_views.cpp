@@ -160,6 +160,7 @@ json frame_json(const CapturedFrame& c, const std::string& bus, const canopen::D
           {"rtr", f.rtr},
           {"dlc", f.dlc},
           {"data", hex_string(f.data.data(), f.rtr ? 0 : f.dlc)},
+          {"bytes", canopen::spaced_hex(f.data.data(), f.rtr ? 0 : f.dlc)},
           {"dir", from_node ? "node" : "master"},
           {"service", canopen::service_name(d.service, d.pdo)},
           {"node", d.node >= 0 ? json(d.node) : json(nullptr)},

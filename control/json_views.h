@@ -15,7 +15,8 @@ namespace control {
 std::string nmt_name(const NodeStatus& s);
 /// Node = {"name","node_id","bus","nmt","error_register","device":{...},"emcy":[...]}.
 nlohmann::json node_json(const std::string& name, const std::string& bus, const NodeStatus& s);
-/// Frame = {"t_us","bus","id","ext","rtr","dlc","data","dir","service","node","text","candump"}.
+/// Frame = {"t_us","bus","id","ext","rtr","dlc","data","bytes","dir","service","node","text","candump"}
+/// ("data" "2B40600007000000", "bytes" the same spaced: "2B 40 60 00 07 00 00 00").
 nlohmann::json frame_json(const CapturedFrame& f, const std::string& bus, const canopen::DecodedFrame& d);
 /// Signal = {"name","unit" (SI),"display_unit","display_scale","display_offset"}: display = si × scale + offset.
 nlohmann::json signal_json(const std::string& name, const std::string& unit, const sim::DisplayUnit& display);

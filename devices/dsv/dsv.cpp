@@ -9,6 +9,7 @@
 #include "devices/dsv/control_mode.h"
 #include "devices/dsv/dsv_object_dictionary.h"
 #include "devices/dsv/dsv_objects.h"
+#include "devices/dsv/dsv_scaling.h"
 #include "devices/profiles/dsp408/od_value.h"
 
 namespace dsv {
@@ -301,6 +302,10 @@ void Dsv::process(sim::Time now, sim::Duration dt) {
   temperature_out_.put(temperature_);
   restore_mapping_entry();
   restore_alias_entry();
+}
+
+canopen::ValueScaling Dsv::value_scaling(std::uint16_t index, std::uint8_t sub) {
+  return dsv::value_scaling(options_, index, sub);
 }
 
 sim::PortList Dsv::ports() {

@@ -3,6 +3,7 @@
 #include "devices/canopen/eds.h"
 #include "devices/canopen/lss_slave.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
+#include "devices/hlt1100/hlt1100_scaling.h"
 
 namespace hlt1100 {
 
@@ -76,6 +77,10 @@ std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std:
     return nullptr;
   }
   return std::unique_ptr<Device>(new Device(std::move(settings), id, options.store_path));
+}
+
+canopen::ValueScaling Device::value_scaling(std::uint16_t index, std::uint8_t sub) {
+  return hlt1100::value_scaling(node_->od(), index, sub);
 }
 
 sim::PortList Device::ports() {

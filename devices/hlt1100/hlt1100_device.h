@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/hlt1100/hlt1100_emcy_codes.h"
 #include "devices/profiles/cia406/profile_status.h"
 #include "devices/hlt1100/hlt1100_application.h"
 #include "devices/hlt1100/hlt1100_settings.h"
@@ -26,6 +27,8 @@ class Device final : public devices::Device {
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
   devices::ProfileStatus profile_status() override { return cia406::profile_status(node_->od()); }
+  std::span<const devices::EmcyCode> emcy_codes() const override { return hlt1100::emcy_codes(); }
+  canopen::ValueScaling value_scaling(std::uint16_t index, std::uint8_t sub) override;
 
   Application& application() { return *app_; }
   const Settings& settings() const { return *settings_; }

@@ -13,6 +13,7 @@
 #include "devices/profiles/cia406/profile_status.h"
 #include "devices/registry.h"
 #include "devices/wdga/wdga_application.h"
+#include "devices/wdga/wdga_emcy_codes.h"
 #include "devices/wdga/wdga_settings.h"
 
 namespace wdga {
@@ -29,6 +30,8 @@ class Device final : public devices::Device {
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
   devices::ProfileStatus profile_status() override { return cia406::profile_status(node_->od()); }
+  std::span<const devices::EmcyCode> emcy_codes() const override { return wdga::emcy_codes(); }
+  canopen::ValueScaling value_scaling(std::uint16_t index, std::uint8_t sub) override;
   void power_off() override;
   void power_on(sim::Time now) override;
 

@@ -3,6 +3,8 @@
 // the decoded stream, fault injection and clearing, the clock.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "engine/environment.h"
 #include "engine/scenario_loader.h"
 #include "tests/control/live_plant.h"
@@ -171,6 +173,8 @@ TEST_F(ControlApi, SdoWriteOfTheDsvControlWordDrivesTheStateMachineAndShowsInThe
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(150));
 
+  // A frame on the HLT 1100's TPDO1 (0x185): its position reads in mm (6005h:01 = 0.1 mm steps).
+  ASSERT_EQ(status(p().post("/api/frames", {{"bus", "main"}, {"id", "0x185"}, {"data", "D2040000"}})), 200);
   auto r = p().post("/api/nodes/dsv/sdo", {{"index", 0x6040}, {"sub", 0}, {"value", 7}});
   ASSERT_EQ(status(r), 200) << (r ? r->body : "");
   EXPECT_EQ(LivePlant::json_of(r)["ok"], true);
@@ -194,6 +198,9 @@ TEST_F(ControlApi, SdoWriteOfTheDsvControlWordDrivesTheStateMachineAndShowsInThe
   EXPECT_NE(stream.find("SDO download response 6040:00 Device control word: done"), std::string::npos);
   EXPECT_NE(stream.find("\"candump\":\"("), std::string::npos);  // candump -L lines
   EXPECT_NE(stream.find(" main 602#2B40600007000000"), std::string::npos);
+  EXPECT_NE(stream.find("\"bytes\":\"2B 40 60 00 07 00 00 00\""), std::string::npos);  // spaced hex
+  EXPECT_NE(stream.find("6020:01 Position value = 123.4 mm (raw 1234)"), std::string::npos)
+      << stream.substr(stream.find("TPDO1 node 5") == std::string::npos ? 0 : stream.find("TPDO1 node 5"), 600);
 }
 
 TEST_F(ControlApi, SdoReadsAndRefusals) {
@@ -237,6 +244,31 @@ TEST_F(ControlApi, ObjectDictionaryListsEntriesWithValues) {
   }
   EXPECT_TRUE(found);
   EXPECT_EQ(status(p().http().Get("/api/nodes/ghost/od")), 404);
+}
+
+TEST_F(ControlApi, EntriesWithAProductScalingShowTheirUnitAndEngineeringValue) {
+  const auto find = [](const nlohmann::json& od, int index, int sub) {
+    for (const auto& e : od)
+      if (e["index"] == index && e["sub"] == sub) return e;
+    return nlohmann::json{};
+  };
+  // HLT 1100: position in steps of 0.1 mm (6005h:01 = 100000 nm).
+  const auto hlt = get("/api/nodes/hlt/od");
+  const auto position = find(hlt, 0x6020, 1);
+  ASSERT_TRUE(position.is_object()) << "no 6020:01";
+  EXPECT_EQ(position["unit"], "mm");
+  char expected[32];
+  std::snprintf(expected, sizeof expected, "%.1f mm", position["value"].get<double>() * 0.1);
+  EXPECT_EQ(position["display"], expected);
+  EXPECT_EQ(find(hlt, 0x6030, 1)["unit"], "mm/s");
+  // WDGA multiturn: the position in turns of 6001h = 16384 steps.
+  const auto wdga_position = find(get("/api/nodes/wdga/od"), 0x6004, 0);
+  EXPECT_EQ(wdga_position["unit"], "turns");
+  EXPECT_TRUE(wdga_position.contains("display"));
+  // Entries the manual gives no scaling keep their raw value only.
+  const auto cw = find(get("/api/nodes/dsv/od"), 0x6040, 0);
+  EXPECT_FALSE(cw.contains("unit"));
+  EXPECT_FALSE(cw.contains("display"));
 }
 
 TEST_F(ControlApi, NmtCommandsAndRawFrames) {
