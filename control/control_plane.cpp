@@ -135,6 +135,14 @@ const char* access_name(canopen::Access a) {
 }
 
 /// A dictionary value as JSON: numbers for numeric types, text for visible strings, hex else.
+/// An integer entry in the product's documented unit ("12.3 mm"); "" without a scaling.
+std::string display_text(canopen::DataType type, const std::vector<std::uint8_t>& bytes, const canopen::ValueScaling& s) {
+  if (!s || bytes.size() != canopen::type_size(type)) return {};
+  if (canopen::is_signed_integer(type)) return canopen::scaled_text(static_cast<double>(canopen::decode_signed(bytes)), s);
+  if (canopen::is_unsigned_integer(type)) return canopen::scaled_text(static_cast<double>(canopen::decode_unsigned(bytes)), s);
+  return {};
+}
+
 json value_json(canopen::DataType type, const std::vector<std::uint8_t>& bytes) {
   using canopen::DataType;
   if (type == DataType::VisibleString) {
@@ -317,7 +325,7 @@ struct ControlPlane::Server {
     json nodes = json::array(), device_faults = json::array(), inputs = json::array(), bus_off = json::array();
     for (std::size_t i = 0; i < world.nodes().size(); ++i) {
       auto& n = world.nodes()[i];
-      catalog.add_node(n.device->node().od());
+      catalog.add_node(*n.device);
       node_index[n.spec->name] = i;
       node_names.push_back(n.spec->name);
       node_bus.push_back(n.bus);
@@ -333,7 +341,9 @@ struct ControlPlane::Server {
       std::vector<std::string> in;
       for (const auto& p : n.ports) {
         if (p.direction != sim::PortDirection::Input) continue;
-        inputs.push_back({{"node", n.spec->name}, {"name", p.name}, {"unit", p.unit}});
+        auto input = signal_json(p.name, p.unit, p.display);
+        input["node"] = n.spec->name;
+        inputs.push_back(std::move(input));
         in.push_back(p.name);
       }
       node_inputs.push_back(std::move(in));
@@ -343,7 +353,7 @@ struct ControlPlane::Server {
     for (std::size_t s = 0; s < cp.bridge_.signals().size(); ++s) {
       const auto& sig = cp.bridge_.signals()[s];
       signal_index[sig.name] = s;
-      signals.push_back(sig.name);
+      signals.push_back(signal_json(sig.name, sig.unit, sig.display));
     }
     json plant = json::array();
     if (auto* p = world.plant())
@@ -473,26 +483,38 @@ struct ControlPlane::Server {
   void od(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
     const auto& entries = catalog.entries(i);
-    auto values = call<std::vector<std::vector<std::uint8_t>>>([i, &entries](const scenario::RunContext& c) {
-      std::vector<std::vector<std::uint8_t>> v;
-      v.reserve(entries.size());
-      const auto& od = c.world.nodes()[i].device->node().od();
+    struct Read {
+      std::vector<std::vector<std::uint8_t>> values;
+      std::vector<canopen::ValueScaling> scalings;  ///< the product's, as configured now
+    };
+    auto read = call<Read>([i, &entries](const scenario::RunContext& c) {
+      Read r;
+      r.values.reserve(entries.size());
+      r.scalings.reserve(entries.size());
+      auto& device = *c.world.nodes()[i].device;
+      const auto& od = device.node().od();
       for (const auto& e : entries) {
         const auto* entry = od.entry(e.index, e.sub);
-        v.push_back(entry ? entry->value : std::vector<std::uint8_t>{});
+        r.values.push_back(entry ? entry->value : std::vector<std::uint8_t>{});
+        r.scalings.push_back(device.value_scaling(e.index, e.sub));
       }
-      return v;
+      return r;
     });
     json a = json::array();
     for (std::size_t k = 0; k < entries.size(); ++k) {
       const auto& e = entries[k];
-      a.push_back({{"index", e.index},
-                   {"sub", e.sub},
-                   {"name", e.name},
-                   {"type", std::string(canopen::type_name(e.type))},
-                   {"access", access_name(e.access)},
-                   {"pdo_mappable", e.pdo_mappable},
-                   {"value", value_json(e.type, values[k])}});
+      json j = {{"index", e.index},
+                {"sub", e.sub},
+                {"name", e.name},
+                {"type", std::string(canopen::type_name(e.type))},
+                {"access", access_name(e.access)},
+                {"pdo_mappable", e.pdo_mappable},
+                {"value", value_json(e.type, read.values[k])}};
+      if (const auto display = display_text(e.type, read.values[k], read.scalings[k]); !display.empty()) {
+        j["unit"] = std::string(read.scalings[k].unit);
+        j["display"] = display;
+      }
+      a.push_back(std::move(j));
     }
     reply(res, 200, a);
   }
@@ -745,8 +767,13 @@ struct ControlPlane::Server {
       return std::make_pair(static_cast<std::int64_t>(c.scheduler.now().time_since_epoch().count()), v);
     });
     json vals = json::object();
-    for (std::size_t k = 0; k < list.size(); ++k) vals[sigs[list[k]].name] = values.second[k];
-    reply(res, 200, {{"t_us", values.first}, {"values", vals}});
+    json meta = json::array();
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const auto& sig = sigs[list[k]];
+      vals[sig.name] = values.second[k];
+      meta.push_back(signal_json(sig.name, sig.unit, sig.display));
+    }
+    reply(res, 200, {{"t_us", values.first}, {"values", vals}, {"signals", meta}});
   }
 
   void clock_control(const http::Request& req, http::Response& res) {

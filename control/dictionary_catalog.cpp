@@ -2,8 +2,10 @@
 
 namespace control {
 
-void DictionaryCatalog::add_node(const canopen::ObjectDictionary& od) {
+void DictionaryCatalog::add_node(devices::Device& device) {
+  const auto& od = device.node().od();
   Node n;
+  n.emcy_codes = device.emcy_codes();
   for (const auto& [index, object] : od.objects()) {
     for (const auto& [sub, e] : object.entries) {
       CatalogEntry c;
@@ -13,6 +15,7 @@ void DictionaryCatalog::add_node(const canopen::ObjectDictionary& od) {
       c.type = e.type;
       c.access = e.access;
       c.pdo_mappable = e.pdo_mappable;
+      c.scaling = device.value_scaling(index, sub);
       n.by_key[static_cast<std::uint32_t>(index) << 8 | sub] = n.entries.size();
       n.entries.push_back(std::move(c));
     }
@@ -25,6 +28,13 @@ const CatalogEntry* DictionaryCatalog::find(std::size_t node, std::uint16_t inde
   const auto& n = nodes_[node];
   const auto it = n.by_key.find(static_cast<std::uint32_t>(index) << 8 | sub);
   return it == n.by_key.end() ? nullptr : &n.entries[it->second];
+}
+
+std::string_view DictionaryCatalog::emcy_text(std::size_t node, std::uint16_t code) const {
+  if (node >= nodes_.size()) return {};
+  for (const auto& c : nodes_[node].emcy_codes)
+    if (c.code == code) return c.text;
+  return {};
 }
 
 void BusDecoderContext::update(const std::vector<int>& node_bus, const std::vector<NodeStatus>& status,
@@ -62,7 +72,13 @@ const canopen::DecoderContext::ObjectInfo* BusDecoderContext::object(std::uint8_
   if (!e) return nullptr;
   scratch_.name = e->name;
   scratch_.type = e->type;
+  scratch_.scaling = e->scaling;
   return &scratch_;
+}
+
+std::string_view BusDecoderContext::emcy_text(std::uint8_t node, std::uint16_t code) const {
+  const int i = node_index(node);
+  return i < 0 ? std::string_view{} : catalog_.emcy_text(static_cast<std::size_t>(i), code);
 }
 
 const canopen::DecoderContext::PdoInfo* BusDecoderContext::pdo(std::uint32_t cob_id) const {

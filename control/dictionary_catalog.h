@@ -7,12 +7,14 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "control/live_state.h"
 #include "devices/canopen/frame_decoder.h"
 #include "devices/canopen/object_dictionary.h"
+#include "devices/device.h"
 
 namespace control {
 
@@ -23,20 +25,25 @@ struct CatalogEntry {
   canopen::DataType type = canopen::DataType::Unsigned8;
   canopen::Access access = canopen::Access::ReadWrite;
   bool pdo_mappable = false;
+  canopen::ValueScaling scaling;  ///< the product's documented scaling when the run began
 };
 
 class DictionaryCatalog {
  public:
-  /// Copies one node's dictionary (before the run: the caller owns the node's thread).
-  void add_node(const canopen::ObjectDictionary& od);
+  /// Copies one node's dictionary, its product's scalings and EMCY codes (before the run: the
+  /// caller owns the node's thread).
+  void add_node(devices::Device& device);
   std::size_t size() const { return nodes_.size(); }
   const std::vector<CatalogEntry>& entries(std::size_t node) const { return nodes_[node].entries; }
   const CatalogEntry* find(std::size_t node, std::uint16_t index, std::uint8_t sub) const;
+  /// The product's text for EMCY `code` of node `node`, or "".
+  std::string_view emcy_text(std::size_t node, std::uint16_t code) const;
 
  private:
   struct Node {
     std::vector<CatalogEntry> entries;  ///< by index, then sub
     std::map<std::uint32_t, std::size_t> by_key;
+    std::span<const devices::EmcyCode> emcy_codes;  ///< the product's table (static storage)
   };
   std::vector<Node> nodes_;
 };
@@ -51,6 +58,7 @@ class BusDecoderContext final : public canopen::DecoderContext {
 
   const ObjectInfo* object(std::uint8_t node, std::uint16_t index, std::uint8_t sub) const override;
   const PdoInfo* pdo(std::uint32_t cob_id) const override;
+  std::string_view emcy_text(std::uint8_t node, std::uint16_t code) const override;
   /// Scenario index of the node with this node-ID on the bus, or -1.
   int node_index(std::uint8_t node_id) const { return node_id < 128 ? by_id_[node_id] : -1; }
 

@@ -6,11 +6,13 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "devices/canopen/node.h"
+#include "devices/canopen/value_scaling.h"
 #include "devices/profile_status.h"
 #include "devices/state_machine_diagram.h"
 #include "devices/transition_log.h"
@@ -27,6 +29,13 @@ struct DeviceOptions {
   std::map<std::string, std::string> settings;
   std::string store_path;    ///< non-volatile memory file ("" = in memory for the run)
   bool strict_eds = false;   ///< an EDS node: reject the file's CiA 306 deviations (canopen::EdsStrictness)
+};
+
+/// A product's own EMCY code (a manufacturer-specific code, or a standard one its manual gives a
+/// precise meaning), as its manual words it.
+struct EmcyCode {
+  std::uint16_t code = 0;
+  std::string_view text;
 };
 
 struct FaultInfo {
@@ -57,6 +66,14 @@ class Device {
   virtual int profile_channel_count() const { return 0; }
   /// Channel `channel` (1-based, up to profile_channel_count()); empty for anything else.
   virtual ProfileStatus channel_profile_status(int /*channel*/) { return {}; }
+
+  /// The product's documented scaling of dictionary entry index:sub as its configuration stands
+  /// now (the manual's resolution, e.g. steps of 0.1 mm); none when the manual gives none. Reads
+  /// the dictionary: call it on the scheduler's thread or before the run.
+  virtual canopen::ValueScaling value_scaling(std::uint16_t /*index*/, std::uint8_t /*sub*/) { return {}; }
+
+  /// The EMCY codes this product's manual defines, with their text (static storage).
+  virtual std::span<const EmcyCode> emcy_codes() const { return {}; }
 
   /// Power cycle as a scenario sees it. Devices with state that survives power-off (multiturn
   /// counters, non-volatile memory) override and keep it.

@@ -189,7 +189,8 @@ async function main(): Promise<void> {
 
   const trace = new TraceView($('trace'), sc.nodes);
   let stream: EventSource | null = null;
-  const plots = new Plots($('plots'), sc.signals, defaultSignals(sc.signals, sc.nodes.map((n) => n.name)), (chosen) => {
+  const signalNames = sc.signals.map((s) => s.name);
+  const plots = new Plots($('plots'), signalNames, defaultSignals(signalNames, sc.nodes.map((n) => n.name)), (chosen) => {
     plots.choose(chosen);
     connect(chosen);
   });
@@ -217,7 +218,7 @@ async function main(): Promise<void> {
     select(first);
   }
   await refreshFaults();
-  connect(defaultSignals(sc.signals, sc.nodes.map((n) => n.name)));
+  connect(defaultSignals(signalNames, sc.nodes.map((n) => n.name)));
   // Live values of the dictionary and the active faults: polled, they change rarely.
   setInterval(() => void refreshOd(), 1000);
   setInterval(() => void refreshFaults(), 2000);

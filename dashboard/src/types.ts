@@ -46,13 +46,22 @@ export interface ScenarioNode {
   profile: 'dsp408' | 'vtvpcd' | 'cia406' | 'generic';
 }
 
+/** A plant signal: values arrive in SI (`unit`); display = si × display_scale + display_offset. */
+export interface SignalMeta {
+  name: string;
+  unit: string;
+  display_unit: string;
+  display_scale: number;
+  display_offset: number;
+}
+
 export interface Scenario {
   name: string;
   description: string;
   clock: { mode: 'virtual' | 'realtime'; tick_us: number };
   buses: { name: string; wire: string; bitrate: number }[];
   nodes: ScenarioNode[];
-  signals: string[];
+  signals: SignalMeta[];
   faults: {
     device: { node: string; name: string; description: string }[];
     wire: string[];
@@ -60,7 +69,7 @@ export interface Scenario {
     power: string[];
     plant: string[];
   };
-  inputs: { node: string; name: string; unit?: string }[];
+  inputs: ({ node: string } & SignalMeta)[];
 }
 
 export interface OdEntry {

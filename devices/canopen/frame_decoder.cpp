@@ -29,14 +29,9 @@ std::uint32_t le(const sim::CanFrame& f, int at, int n) {
 }
 
 std::string bytes_hex(const sim::CanFrame& f, int from, int to) {
-  std::string s;
-  char buf[4];
-  for (int i = from; i < to && i < f.dlc; ++i) {
-    std::snprintf(buf, sizeof buf, "%02X", f.data[static_cast<std::size_t>(i)]);
-    if (!s.empty()) s += ' ';
-    s += buf;
-  }
-  return s;
+  if (to > f.dlc) to = f.dlc;
+  if (from >= to) return {};
+  return spaced_hex(f.data.data() + from, static_cast<std::size_t>(to - from));
 }
 
 /// An object reference with its name when the context knows it: "6040:00 Device control word".
@@ -52,9 +47,20 @@ std::string object_text(const DecoderContext& ctx, std::uint8_t node, std::uint1
   return s;
 }
 
-/// A little-endian value of `bits` bits as its type reads (hex and decimal for integers).
+/// A little-endian value of `bits` bits as its type reads (hex and decimal for integers); with the
+/// product's scaling, the value in its unit first ("12.3 mm (raw 123)").
 std::string value_text(std::uint64_t raw, int bits, const DecoderContext::ObjectInfo* info) {
   const DataType type = info ? info->type : DataType::Unsigned32;
+  if (info && info->scaling && (is_signed_integer(type) || is_unsigned_integer(type)) && bits > 0 && bits <= 64) {
+    double v = static_cast<double>(raw);
+    if (is_signed_integer(type) && bits < 64 && (raw >> (bits - 1)) & 1)
+      v = static_cast<double>(static_cast<std::int64_t>(raw | (~0ULL << bits)));
+    else if (is_signed_integer(type) && bits == 64)
+      v = static_cast<double>(static_cast<std::int64_t>(raw));
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.0f", v);
+    return scaled_text(v, info->scaling) + " (raw " + buf + ")";
+  }
   if (type == DataType::Real32 && bits == 32) {
     float f;
     const auto u = static_cast<std::uint32_t>(raw);
@@ -72,6 +78,13 @@ std::string value_text(std::uint64_t raw, int bits, const DecoderContext::Object
     s += " (" + std::to_string(raw) + ")";
   }
   return s;
+}
+
+/// An expedited SDO value: 1016h entries as consumer node-ID and time, else as the type reads.
+std::string expedited_text(std::uint16_t index, std::uint8_t sub, std::uint32_t value, int n,
+                           const DecoderContext::ObjectInfo* info) {
+  if (index == 0x1016 && sub >= 1 && n == 4) return heartbeat_consumer_text(value) + " (" + hex(value, 8) + ")";
+  return value_text(value, n * 8, info);
 }
 
 void decode_sdo(const sim::CanFrame& f, bool request, const DecoderContext& ctx, DecodedFrame& d) {
@@ -106,7 +119,7 @@ void decode_sdo(const sim::CanFrame& f, bool request, const DecoderContext& ctx,
         const std::string obj = object_text(ctx, node, index, sub, &info);
         if (b0 & 0x02) {
           const int n = (b0 & 0x01) ? 4 - ((b0 >> 2) & 3) : 4;
-          d.text = "SDO download " + obj + " = " + value_text(le(f, 4, n), n * 8, info);
+          d.text = "SDO download " + obj + " = " + expedited_text(index, sub, le(f, 4, n), n, info);
         } else {
           d.text = "SDO download initiate " + obj + ((b0 & 0x01) ? ", " + std::to_string(le(f, 4, 4)) + " bytes" : "");
         }
@@ -128,7 +141,7 @@ void decode_sdo(const sim::CanFrame& f, bool request, const DecoderContext& ctx,
       const std::string obj = object_text(ctx, node, index, sub, &info);
       if (b0 & 0x02) {
         const int n = (b0 & 0x01) ? 4 - ((b0 >> 2) & 3) : 4;
-        d.text = "SDO upload response " + obj + " = " + value_text(le(f, 4, n), n * 8, info);
+        d.text = "SDO upload response " + obj + " = " + expedited_text(index, sub, le(f, 4, n), n, info);
       } else {
         d.text = "SDO upload initiate response " + obj + ((b0 & 0x01) ? ", " + std::to_string(le(f, 4, 4)) + " bytes" : "");
       }
@@ -230,6 +243,26 @@ void decode_pdo(const sim::CanFrame& f, const DecoderContext::PdoInfo* info, con
 
 const DecoderContext::ObjectInfo* DecoderContext::object(std::uint8_t, std::uint16_t, std::uint8_t) const { return nullptr; }
 const DecoderContext::PdoInfo* DecoderContext::pdo(std::uint32_t) const { return nullptr; }
+std::string_view DecoderContext::emcy_text(std::uint8_t, std::uint16_t) const { return {}; }
+
+std::string spaced_hex(const std::uint8_t* data, std::size_t n) {
+  static constexpr char kDigits[] = "0123456789ABCDEF";
+  std::string s;
+  s.reserve(n * 3);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i) s += ' ';
+    s += kDigits[data[i] >> 4];
+    s += kDigits[data[i] & 0xF];
+  }
+  return s;
+}
+
+std::string heartbeat_consumer_text(std::uint32_t value) {
+  const auto node = (value >> 16) & 0x7F;
+  const auto ms = value & 0xFFFF;
+  if (node == 0 || ms == 0) return "off (node " + std::to_string(node) + ", " + std::to_string(ms) + " ms)";
+  return "node " + std::to_string(node) + ", " + std::to_string(ms) + " ms";
+}
 
 std::string service_name(Service s, int pdo) {
   switch (s) {
@@ -251,7 +284,7 @@ std::string service_name(Service s, int pdo) {
 namespace {
 std::string_view emcy_exact(std::uint16_t code) {
   switch (code) {
-    case 0x0000: return "error reset or no error";
+    case 0x0000: return "error reset / no error";
     case 0x1000: return "generic error";
     case 0x2000: return "current";
     case 0x2100: return "current, device input side";
@@ -402,7 +435,9 @@ DecodedFrame decode_frame(const sim::CanFrame& f, const DecoderContext& ctx) {
       }
       const auto code = static_cast<std::uint16_t>(le(f, 0, 2));
       const std::uint8_t reg = f.data[2];
-      d.text = "EMCY node " + std::to_string(node) + " " + hex(code, 4) + " " + std::string(emcy_code_text(code)) +
+      const auto own = code == 0 ? std::string_view{} : ctx.emcy_text(static_cast<std::uint8_t>(node), code);
+      d.text = "EMCY node " + std::to_string(node) + " " + hex(code, 4) + " " +
+               std::string(own.empty() ? emcy_code_text(code) : own) +
                ", error register " + hex(reg, 2) + " (" + error_register_text(reg) + ")";
       if (f.dlc > 3) d.text += ", data [" + bytes_hex(f, 3, f.dlc) + "]";
       return d;

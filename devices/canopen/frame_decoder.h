@@ -2,7 +2,8 @@
 // SYNC with counter, TIME, EMCY with the code's meaning and the error-register bits, SDO requests
 // and responses with index:sub, the object's name, segment toggles and abort texts, PDOs with
 // their mapped objects' names and values, heartbeat, boot-up and node guarding with the state's
-// name, LSS. Pure: what it knows of the nodes (names, types, PDO mappings) comes from a context.
+// name, LSS, the heartbeat consumer times of 1016h, the products' own EMCY codes, process values
+// in the product's documented units. Pure: what it knows of the nodes (names, types, PDO mappings) comes from a context.
 // Shared by the live control plane's trace, trace export and reports.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "devices/canopen/data_type.h"
+#include "devices/canopen/value_scaling.h"
 #include "sim/can_frame.h"
 
 namespace canopen {
@@ -29,6 +31,7 @@ class DecoderContext {
   struct ObjectInfo {
     std::string_view name;
     DataType type = DataType::Unsigned32;
+    ValueScaling scaling;  ///< the product's documented scaling (PDO/SDO values print in its unit)
   };
   struct MappedEntry {
     std::uint16_t index = 0;
@@ -46,6 +49,9 @@ class DecoderContext {
   virtual const ObjectInfo* object(std::uint8_t node, std::uint16_t index, std::uint8_t sub) const;
   /// The PDO some node sends or receives on `cob_id`, or nullptr.
   virtual const PdoInfo* pdo(std::uint32_t cob_id) const;
+  /// The product's own meaning of EMCY code `code` sent by node `node` (manufacturer codes of its
+  /// manual), or "" (then the CiA 301 meaning of the code or its class is printed).
+  virtual std::string_view emcy_text(std::uint8_t node, std::uint16_t code) const;
 };
 
 struct DecodedFrame {
@@ -57,6 +63,11 @@ struct DecodedFrame {
 
 DecodedFrame decode_frame(const sim::CanFrame& frame, const DecoderContext& context);
 DecodedFrame decode_frame(const sim::CanFrame& frame);
+
+/// Data bytes as spaced hex: "2B 40 60 00 0F 00 00 00".
+std::string spaced_hex(const std::uint8_t* data, std::size_t n);
+/// A heartbeat consumer entry (1016h:01..7F): "node 5, 500 ms"; "off" when the node-ID or the time is 0.
+std::string heartbeat_consumer_text(std::uint32_t value);
 
 /// CiA 301 emergency error code meaning (exact code, else its class), e.g. 0x8130 →
 /// "life guard or heartbeat error"; 0xFFxx "device specific".

@@ -24,6 +24,7 @@
 
 #include "devices/device.h"
 #include "devices/dsv/actual_value_input.h"
+#include "devices/dsv/dsv_emcy_codes.h"
 #include "devices/dsv/dsv_options.h"
 #include "devices/dsv/dsv_parameters.h"
 #include "devices/dsv/dsv_signal_chain.h"
@@ -44,6 +45,8 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
   std::string inject_fault(std::string_view name, bool active) override;
   void power_on(sim::Time now) override;
   devices::ProfileStatus profile_status() override { return control_->profile_status(); }
+  std::span<const devices::EmcyCode> emcy_codes() const override { return dsv::emcy_codes(); }
+  canopen::ValueScaling value_scaling(std::uint16_t index, std::uint8_t sub) override;
 
   const DsvOptions& options() const { return options_; }
   dsp408::ChannelControl& control() { return *control_; }

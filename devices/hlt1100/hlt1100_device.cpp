@@ -3,6 +3,7 @@
 #include "devices/canopen/eds.h"
 #include "devices/canopen/lss_slave.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
+#include "devices/hlt1100/hlt1100_scaling.h"
 
 namespace hlt1100 {
 
@@ -79,13 +80,17 @@ std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std:
   return std::unique_ptr<Device>(new Device(std::move(settings), id, options.store_path));
 }
 
+canopen::ValueScaling Device::value_scaling(std::uint16_t index, std::uint8_t sub) {
+  return hlt1100::value_scaling(node_->od(), index, sub);
+}
+
 sim::PortList Device::ports() {
   auto& in = app_->inputs();
   return {
       {"position", sim::PortDirection::Input, "m", &in.position,
-       "magnet position from the start of the measuring range (sensor head end)"},
-      {"position2", sim::PortDirection::Input, "m", &in.position2, "second magnet (counts with magnet_count = 2)"},
-      {"magnet_count", sim::PortDirection::Input, "1", &in.magnet_count, "magnets on the rod: 0, 1 or 2"},
+       "magnet position from the start of the measuring range (sensor head end)", sim::display::mm},
+      {"position2", sim::PortDirection::Input, "m", &in.position2, "second magnet (counts with magnet_count = 2)", sim::display::mm},
+      {"magnet_count", sim::PortDirection::Input, "1", &in.magnet_count, "magnets on the rod: 0, 1 or 2", sim::display::as_si},
   };
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/hlt1100/hlt1100_emcy_codes.h"
 #include "devices/profiles/cia406/profile_status.h"
 #include "devices/profiles/cia406/status_machines.h"
 #include "devices/hlt1100/hlt1100_application.h"
@@ -32,6 +33,8 @@ class Device final : public devices::Device {
     cia406::append_status_machines(*node_, Application::status_bits(), out);
     return out;
   }
+  std::span<const devices::EmcyCode> emcy_codes() const override { return hlt1100::emcy_codes(); }
+  canopen::ValueScaling value_scaling(std::uint16_t index, std::uint8_t sub) override;
 
   Application& application() { return *app_; }
   const Settings& settings() const { return *settings_; }

@@ -22,6 +22,7 @@
 
 #include "devices/device.h"
 #include "devices/md2/md2_channel.h"
+#include "devices/md2/md2_emcy_codes.h"
 #include "devices/md2/md2_options.h"
 #include "devices/profiles/dsp408/od_value.h"
 #include "devices/profiles/wandfluh/valve_application.h"
@@ -40,6 +41,7 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
   std::string inject_fault(std::string_view name, bool active) override;
   /// Channel 1's device state.
   devices::ProfileStatus profile_status() override { return channels_.front()->control().profile_status(); }
+  std::span<const devices::EmcyCode> emcy_codes() const override { return md2::emcy_codes(); }
   int profile_channel_count() const override { return options_.channels; }
   devices::ProfileStatus channel_profile_status(int channel) override {
     if (channel < 1 || channel > static_cast<int>(channels_.size())) return {};

@@ -23,6 +23,7 @@
 #include "devices/vtvpcd/parameter_conversion.h"
 #include "devices/vtvpcd/pump_controller.h"
 #include "devices/vtvpcd/settings.h"
+#include "devices/vtvpcd/vtvpcd_emcy_codes.h"
 
 namespace vtvpcd {
 
@@ -41,6 +42,7 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   std::string inject_fault(std::string_view name, bool active) override;
   /// Run state (fault stop / not enabled / running) and the active faults.
   devices::ProfileStatus profile_status() override;
+  std::span<const devices::EmcyCode> emcy_codes() const override { return vtvpcd::emcy_codes(); }
   /// Unpowered, the pilot valve is de-energised.
   void power_off() override;
   /// The card's run state (manual §3.1: "internal operational states ... fault states, waiting

@@ -3,6 +3,7 @@
 #include "devices/canopen/eds.h"
 #include "devices/canopen/lss_slave.h"
 #include "devices/wdga/wdga_object_dictionary.h"
+#include "devices/wdga/wdga_scaling.h"
 
 namespace wdga {
 
@@ -83,14 +84,20 @@ std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std:
   return std::unique_ptr<Device>(new Device(std::move(settings), id, options.store_path));
 }
 
+canopen::ValueScaling Device::value_scaling(std::uint16_t index, std::uint8_t sub) {
+  return wdga::value_scaling(settings_->multiturn, node_->od(), index, sub);
+}
+
 sim::PortList Device::ports() {
   auto& shaft = app_->measurement().shaft();
+  // A multiturn encoder counts turns; a singleturn one reads an angle within one turn.
+  const sim::DisplayUnit angle_display = settings_->multiturn ? sim::display::turns : sim::display::degree;
   return {
       {"angle", sim::PortDirection::Input, "rad", &shaft.angle,
-       "shaft angle, continuous and unbounded, clockwise positive looking at the shaft"},
+       "shaft angle, continuous and unbounded, clockwise positive looking at the shaft", angle_display},
       {"speed", sim::PortDirection::Input, "rad/s", &shaft.speed,
-       "shaft speed (derivative of angle): advances the shaft between updates of angle"},
-      {"temperature", sim::PortDirection::Input, "degC", &app_->temperature().input, "device temperature"},
+       "shaft speed (derivative of angle): advances the shaft between updates of angle", sim::display::rpm},
+      {"temperature", sim::PortDirection::Input, "degC", &app_->temperature().input, "device temperature", sim::display::degree_celsius},
   };
 }
 

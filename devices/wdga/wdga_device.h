@@ -14,6 +14,7 @@
 #include "devices/profiles/cia406/status_machines.h"
 #include "devices/registry.h"
 #include "devices/wdga/wdga_application.h"
+#include "devices/wdga/wdga_emcy_codes.h"
 #include "devices/wdga/wdga_settings.h"
 
 namespace wdga {
@@ -35,6 +36,8 @@ class Device final : public devices::Device {
     cia406::append_status_machines(*node_, Application::status_bits(), out);
     return out;
   }
+  std::span<const devices::EmcyCode> emcy_codes() const override { return wdga::emcy_codes(); }
+  canopen::ValueScaling value_scaling(std::uint16_t index, std::uint8_t sub) override;
   void power_off() override;
   void power_on(sim::Time now) override;
 

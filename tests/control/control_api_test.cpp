@@ -3,6 +3,8 @@
 // the decoded stream, fault injection and clearing, the clock.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "engine/environment.h"
 #include "engine/scenario_loader.h"
 #include "tests/control/live_plant.h"
@@ -53,7 +55,28 @@ TEST_F(ControlApi, ScenarioListsBusesNodesSignalsFaultsAndInputs) {
   EXPECT_EQ(profiles["vtvpcd"], "vtvpcd");
   EXPECT_EQ(profiles["hlt"], "cia406");
   EXPECT_EQ(profiles["wdga"], "cia406");
-  EXPECT_NE(std::find(s["signals"].begin(), s["signals"].end(), "cyl.position"), s["signals"].end());
+  // Signals carry their SI unit and the display unit their owner (the plant model, the device) chose.
+  std::map<std::string, nlohmann::json> signals;
+  for (const auto& sig : s["signals"]) signals[sig["name"]] = sig;
+  ASSERT_TRUE(signals.count("cyl.position"));
+  EXPECT_EQ(signals["cyl.position"]["unit"], "m");
+  EXPECT_EQ(signals["cyl.position"]["display_unit"], "mm");
+  EXPECT_DOUBLE_EQ(signals["cyl.position"]["display_scale"].get<double>(), 1000.0);
+  EXPECT_DOUBLE_EQ(signals["cyl.position"]["display_offset"].get<double>(), 0.0);
+  for (const auto& [name, sig] : signals) {
+    EXPECT_FALSE(sig["unit"].get<std::string>().empty()) << name;
+    EXPECT_FALSE(sig["display_unit"].get<std::string>().empty()) << name;
+    EXPECT_NE(sig["display_scale"].get<double>(), 0.0) << name;
+    const std::map<std::string, std::string> expected{{"Pa", "bar"}, {"rad/s", "rpm"}, {"m^3/s", "l/min"}, {"m/s", "mm/s"}};
+    const auto it = expected.find(sig["unit"].get<std::string>());
+    if (it != expected.end()) {
+      EXPECT_EQ(sig["display_unit"], it->second) << name;
+    }
+  }
+  ASSERT_TRUE(signals.count("pump.pressure_b"));
+  EXPECT_DOUBLE_EQ(signals["pump.pressure_b"]["display_scale"].get<double>(), 1e-5);
+  ASSERT_TRUE(signals.count("dsv.solenoid_a_current"));
+  EXPECT_EQ(signals["dsv.solenoid_a_current"]["display_unit"], "mA");
   bool magnet_lost = false;
   for (const auto& f : s["faults"]["device"]) magnet_lost |= f["node"] == "hlt" && f["name"] == "magnet_lost";
   EXPECT_TRUE(magnet_lost);
@@ -150,6 +173,8 @@ TEST_F(ControlApi, SdoWriteOfTheDsvControlWordDrivesTheStateMachineAndShowsInThe
   });
   std::this_thread::sleep_for(std::chrono::milliseconds(150));
 
+  // A frame on the HLT 1100's TPDO1 (0x185): its position reads in mm (6005h:01 = 0.1 mm steps).
+  ASSERT_EQ(status(p().post("/api/frames", {{"bus", "main"}, {"id", "0x185"}, {"data", "D2040000"}})), 200);
   auto r = p().post("/api/nodes/dsv/sdo", {{"index", 0x6040}, {"sub", 0}, {"value", 7}});
   ASSERT_EQ(status(r), 200) << (r ? r->body : "");
   EXPECT_EQ(LivePlant::json_of(r)["ok"], true);
@@ -173,6 +198,9 @@ TEST_F(ControlApi, SdoWriteOfTheDsvControlWordDrivesTheStateMachineAndShowsInThe
   EXPECT_NE(stream.find("SDO download response 6040:00 Device control word: done"), std::string::npos);
   EXPECT_NE(stream.find("\"candump\":\"("), std::string::npos);  // candump -L lines
   EXPECT_NE(stream.find(" main 602#2B40600007000000"), std::string::npos);
+  EXPECT_NE(stream.find("\"bytes\":\"2B 40 60 00 07 00 00 00\""), std::string::npos);  // spaced hex
+  EXPECT_NE(stream.find("6020:01 Position value = 123.4 mm (raw 1234)"), std::string::npos)
+      << stream.substr(stream.find("TPDO1 node 5") == std::string::npos ? 0 : stream.find("TPDO1 node 5"), 600);
 }
 
 TEST_F(ControlApi, SdoReadsAndRefusals) {
@@ -216,6 +244,31 @@ TEST_F(ControlApi, ObjectDictionaryListsEntriesWithValues) {
   }
   EXPECT_TRUE(found);
   EXPECT_EQ(status(p().http().Get("/api/nodes/ghost/od")), 404);
+}
+
+TEST_F(ControlApi, EntriesWithAProductScalingShowTheirUnitAndEngineeringValue) {
+  const auto find = [](const nlohmann::json& od, int index, int sub) {
+    for (const auto& e : od)
+      if (e["index"] == index && e["sub"] == sub) return e;
+    return nlohmann::json{};
+  };
+  // HLT 1100: position in steps of 0.1 mm (6005h:01 = 100000 nm).
+  const auto hlt = get("/api/nodes/hlt/od");
+  const auto position = find(hlt, 0x6020, 1);
+  ASSERT_TRUE(position.is_object()) << "no 6020:01";
+  EXPECT_EQ(position["unit"], "mm");
+  char expected[32];
+  std::snprintf(expected, sizeof expected, "%.1f mm", position["value"].get<double>() * 0.1);
+  EXPECT_EQ(position["display"], expected);
+  EXPECT_EQ(find(hlt, 0x6030, 1)["unit"], "mm/s");
+  // WDGA multiturn: the position in turns of 6001h = 16384 steps.
+  const auto wdga_position = find(get("/api/nodes/wdga/od"), 0x6004, 0);
+  EXPECT_EQ(wdga_position["unit"], "turns");
+  EXPECT_TRUE(wdga_position.contains("display"));
+  // Entries the manual gives no scaling keep their raw value only.
+  const auto cw = find(get("/api/nodes/dsv/od"), 0x6040, 0);
+  EXPECT_FALSE(cw.contains("unit"));
+  EXPECT_FALSE(cw.contains("display"));
 }
 
 TEST_F(ControlApi, NmtCommandsAndRawFrames) {
@@ -326,6 +379,10 @@ TEST_F(ControlApi, InputsAndSignals) {
   const auto v = get("/api/signals?names=cyl.position,pump.swivel_angle");
   EXPECT_TRUE(v["values"]["cyl.position"].is_number());
   EXPECT_TRUE(v["values"]["pump.swivel_angle"].is_number());
+  ASSERT_EQ(v["signals"].size(), 2u);  // values stay SI; the metadata says how to show them
+  EXPECT_EQ(v["signals"][1]["name"], "pump.swivel_angle");
+  EXPECT_EQ(v["signals"][1]["unit"], "1");
+  EXPECT_EQ(v["signals"][1]["display_unit"], "%");
   EXPECT_EQ(v["t_us"], get("/api/clock")["t_us"]);
   EXPECT_EQ(status(p().http().Get("/api/signals?names=cyl.warp")), 400);
   EXPECT_EQ(status(p().http().Get("/api/events?signals=cyl.warp")), 400);

@@ -15,9 +15,11 @@ using sim::CanFrame;
 class TwoObjects final : public canopen::DecoderContext {
  public:
   TwoObjects() {
-    objects_[{0x6040, 0}] = {"Device control word", canopen::DataType::Unsigned16};
-    objects_[{0x6041, 0}] = {"Device status word", canopen::DataType::Unsigned16};
-    objects_[{0x6301, 1}] = {"Actual value", canopen::DataType::Integer16};
+    objects_[{0x6040, 0}] = {"Device control word", canopen::DataType::Unsigned16, {}};
+    objects_[{0x6041, 0}] = {"Device status word", canopen::DataType::Unsigned16, {}};
+    objects_[{0x6301, 1}] = {"Actual value", canopen::DataType::Integer16, {}};
+    objects_[{0x6020, 1}] = {"Position value", canopen::DataType::Integer32, canopen::scaled("mm", 0.1)};
+    objects_[{0x6300, 1}] = {"Preset value", canopen::DataType::Integer16, canopen::scaled("%", 100.0 / 16384)};
     rpdo_.node = 2;
     rpdo_.transmit = false;
     rpdo_.number = 1;
@@ -26,6 +28,9 @@ class TwoObjects final : public canopen::DecoderContext {
     tpdo_.transmit = true;
     tpdo_.number = 1;
     tpdo_.entries = {{0x6041, 0, 16}, {0x6301, 1, 16}};
+    scaled_.node = 2;
+    scaled_.number = 2;
+    scaled_.entries = {{0x6020, 1, 32}, {0x6300, 1, 16}};
   }
   const ObjectInfo* object(std::uint8_t node, std::uint16_t index, std::uint8_t sub) const override {
     if (node != 2) return nullptr;
@@ -35,12 +40,16 @@ class TwoObjects final : public canopen::DecoderContext {
   const PdoInfo* pdo(std::uint32_t cob_id) const override {
     if (cob_id == 0x202) return &rpdo_;
     if (cob_id == 0x182) return &tpdo_;
+    if (cob_id == 0x282) return &scaled_;
     return nullptr;
+  }
+  std::string_view emcy_text(std::uint8_t node, std::uint16_t code) const override {
+    return node == 2 && code == 0xFF01 ? "solenoid A cable break" : "";
   }
 
  private:
   std::map<std::pair<std::uint16_t, std::uint8_t>, ObjectInfo> objects_;
-  PdoInfo rpdo_, tpdo_;
+  PdoInfo rpdo_, tpdo_, scaled_;
 };
 
 DecodedFrame decode(std::uint32_t id, std::initializer_list<std::uint8_t> bytes) {
@@ -81,7 +90,7 @@ TEST(FrameDecoder, EmcyCodeMeaningAndRegisterBits) {
   EXPECT_EQ(canopen::emcy_code_text(0x8250), "RPDO timeout");
   EXPECT_EQ(canopen::emcy_code_text(0xFF00), "device specific");
   EXPECT_EQ(canopen::emcy_code_text(0xFF42), "device specific");
-  EXPECT_EQ(canopen::emcy_code_text(0x0000), "error reset or no error");
+  EXPECT_EQ(canopen::emcy_code_text(0x0000), "error reset / no error");
   // Not in the table: the class it belongs to.
   EXPECT_EQ(canopen::emcy_code_text(0x4210), "device temperature");
   EXPECT_EQ(canopen::emcy_code_text(0x8301), "monitoring");
@@ -141,6 +150,39 @@ TEST(FrameDecoder, PdosWithMappedObjectsAndValues) {
   EXPECT_EQ(decode(0x182, {0x0F, 0x00, 0x01}).text, "TPDO1 node 2: 6041:00 Device status word = 0x000F (15), (frame too short)");
   EXPECT_EQ(decode(0x505, {0x01}).text, "RPDO4 node 5 [01]");
   EXPECT_EQ(decode(0x485, {0x01}).pdo, 4);
+}
+
+TEST(FrameDecoder, PdoValuesInTheProductsDocumentedUnits) {
+  // 6020:01 = 1234 steps of 0.1 mm, 6300:01 = -8192 of ±16384 = ±100 %.
+  EXPECT_EQ(decode(0x282, {0xD2, 0x04, 0x00, 0x00, 0x00, 0xE0}).text,
+            "TPDO2 node 2: 6020:01 Position value = 123.4 mm (raw 1234), 6300:01 Preset value = -50.000 % (raw -8192)");
+  EXPECT_EQ(decode(0x602, {0x2B, 0x00, 0x63, 0x01, 0x00, 0x40, 0, 0}).text,
+            "SDO download 6300:01 Preset value = 100.000 % (raw 16384)");
+}
+
+TEST(FrameDecoder, HeartbeatConsumerTimesOf1016h) {
+  // 1016h:01 = node 5, 500 ms (0x000501F4).
+  EXPECT_EQ(decode(0x602, {0x23, 0x16, 0x10, 0x01, 0xF4, 0x01, 0x05, 0x00}).text,
+            "SDO download 1016:01 = node 5, 500 ms (0x000501F4)");
+  EXPECT_EQ(decode(0x582, {0x43, 0x16, 0x10, 0x02, 0x00, 0x00, 0x00, 0x00}).text,
+            "SDO upload response 1016:02 = off (node 0, 0 ms) (0x00000000)");
+  EXPECT_EQ(decode(0x582, {0x4F, 0x16, 0x10, 0x00, 0x01, 0, 0, 0}).text, "SDO upload response 1016:00 = 0x01 (1)");
+  EXPECT_EQ(canopen::heartbeat_consumer_text(0x007F03E8), "node 127, 1000 ms");
+}
+
+TEST(FrameDecoder, ProductEmcyCodesAndTheNeutralReset) {
+  EXPECT_EQ(decode(0x082, {0x01, 0xFF, 0x81, 0, 0, 0, 0, 0}).text,
+            "EMCY node 2 0xFF01 solenoid A cable break, error register 0x81 (generic, manufacturer), data [00 00 00 00 00]");
+  // Another node with the same code: the CiA 301 class.
+  EXPECT_EQ(decode(0x083, {0x01, 0xFF, 0x81}).text, "EMCY node 3 0xFF01 device specific, error register 0x81 (generic, manufacturer)");
+  EXPECT_EQ(decode(0x082, {0x00, 0x00, 0x00, 0, 0, 0, 0, 0}).text,
+            "EMCY node 2 0x0000 error reset / no error, error register 0x00 (none), data [00 00 00 00 00]");
+}
+
+TEST(FrameDecoder, SpacedHexBytes) {
+  const std::uint8_t bytes[] = {0x2B, 0x40, 0x60, 0x00, 0x0F, 0x00, 0x00, 0x00};
+  EXPECT_EQ(canopen::spaced_hex(bytes, 8), "2B 40 60 00 0F 00 00 00");
+  EXPECT_EQ(canopen::spaced_hex(bytes, 0), "");
 }
 
 TEST(FrameDecoder, HeartbeatBootUpAndGuarding) {
