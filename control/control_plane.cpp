@@ -286,14 +286,6 @@ struct ControlPlane::Server {
     return node_json(node_names[i], bus_names[static_cast<std::size_t>(node_bus[i])], nodes[i]);
   }
 
-  /// Active faults are a client-growable table: bounded (each wire fault is a rule every frame
-  /// on its bus is checked against).
-  void refuse_at_fault_bound() {
-    const auto active = call<std::size_t>([this](const scenario::RunContext&) { return cp.bridge_.live_faults().size(); });
-    if (active >= kMaxLiveFaults)
-      throw HttpError{429, "too many active faults (at most " + std::to_string(kMaxLiveFaults) + "): clear some first"};
-  }
-
   // ---- routes ---------------------------------------------------------------------------------
   using Handler = std::function<void(const http::Request&, http::Response&)>;
   Handler guarded(Handler h) {
@@ -426,10 +418,7 @@ struct ControlPlane::Server {
     router.add("POST", R"(/api/nodes/([^/]+)/inputs)", guarded([this](const http::Request& req, http::Response& res) { set_input(req, res); }));
     router.add("POST", "/api/nmt", guarded([this](const http::Request& req, http::Response& res) { nmt(req, res); }));
     router.add("POST", "/api/frames", guarded([this](const http::Request& req, http::Response& res) { send_frame(req, res); }));
-    router.add("POST", "/api/faults", guarded([this](const http::Request& req, http::Response& res) {
-      refuse_at_fault_bound();
-      inject(req, res);
-    }));
+    router.add("POST", "/api/faults", guarded([this](const http::Request& req, http::Response& res) { inject(req, res); }));
     router.add("GET", "/api/faults", guarded([this](const http::Request& req, http::Response& res) { list_faults(req, res); }));
     router.add("DELETE", R"(/api/faults/([^/]+))", guarded([this](const http::Request& req, http::Response& res) { clear_fault(req, res); }));
     router.add("GET", "/api/signals", guarded([this](const http::Request& req, http::Response& res) { signals(req, res); }));
@@ -684,18 +673,23 @@ struct ControlPlane::Server {
       std::string error;
       int id = 0;
       bool active = false;
+      bool full = false;
     };
     const auto r = call<Result>([this, spec](const scenario::RunContext& c) {
       const auto now = c.scheduler.now();
       const auto now_us = now.time_since_epoch().count();
+      // Active faults are a client-growable table (each wire fault is a rule every frame on its
+      // bus is checked against): bounded exactly, because the check and the insert run in one
+      // command on the scheduler's thread, never apart across the HTTP threads.
+      auto& faults = cp.bridge_.live_faults();
+      forget_ended(faults, now_us);
+      if (faults.size() >= kMaxLiveFaults) return Result{{}, 0, false, true};
       SimBridge::LiveFault live;
       try {
         live.clear = c.faults.inject(spec, now);
       } catch (const scenario::LoadError& e) {
-        return Result{e.what(), 0, false};
+        return Result{e.what(), 0, false, false};
       }
-      auto& faults = cp.bridge_.live_faults();
-      forget_ended(faults, now_us);
       Result out;
       out.id = cp.bridge_.next_fault_id();
       out.active = static_cast<bool>(live.clear);
@@ -708,6 +702,7 @@ struct ControlPlane::Server {
       }
       return out;
     });
+    if (r.full) throw HttpError{429, "too many active faults (at most " + std::to_string(kMaxLiveFaults) + "): clear some first"};
     if (!r.error.empty()) throw HttpError{400, r.error};
     reply(res, 200, {{"ok", true}, {"id", r.id}, {"active", r.active}});
   }

@@ -2,8 +2,10 @@
 
 #include <arpa/inet.h>
 #include <microhttpd.h>
+#include <fcntl.h>
 #include <netinet/in.h>
 #include <strings.h>
+#include <sys/epoll.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
@@ -16,7 +18,9 @@
 #include <regex>
 #include <set>
 #include <thread>
+#include <unordered_map>
 
+#include "control/http_head.h"
 #include "control/server_thread_priority.h"
 
 namespace control::http {
@@ -87,12 +91,21 @@ bool Router::dispatch(Request& request, Response& response) const {
   return true;
 }
 
+/// A connection libmicrohttpd holds, from the gate's accept (its socket context): the deadline
+/// sweep closes it when its request is not complete in time.
+struct Tracked {
+  int fd = -1;
+  std::chrono::steady_clock::time_point accepted;
+  bool done = false;  ///< the request is complete (or answered): the deadline no longer applies
+};
+
 /// One request on its way through the server: filled on the connection thread, answered by a
 /// worker, sent by the connection thread.
 struct Exchange {
   enum class Phase { Reading, Refused, Queued, Answered, Streaming } phase = Phase::Reading;
   std::mutex* server_mu = nullptr;  ///< the server's lock (streams: against the ticker)
   MHD_Connection* connection = nullptr;
+  Tracked* tracked = nullptr;
   Request request;
   Response response;
   std::size_t discarded = 0;  ///< body bytes past the limit (a refused chunked body)
@@ -111,13 +124,218 @@ struct Server::Impl {
   int listen_fd = -1;
   MHD_Daemon* daemon = nullptr;
 
-  std::mutex mu;  // the work queue, the suspended streams, stopping
+  std::mutex mu;  // the work queue, the suspended streams, the tracked connections, stopping
   std::condition_variable work_cv, tick_cv;
   std::deque<Exchange*> queue;
   std::set<Exchange*> streams;
+  std::set<Tracked*> tracked;
+  std::unordered_map<int, std::chrono::steady_clock::time_point> handed;  ///< fd → accept time, until MHD starts it
   bool stopping = false;
   std::vector<std::thread> workers;
   std::thread ticker;
+
+  // ---- the gate: accepts, waits for a whole head that libmicrohttpd will parse, hands it over --
+  // libmicrohttpd answers what it cannot parse with built-in HTML and has no hook to change that;
+  // the gate refuses all of it first, with JSON (control/http_head.h). It only peeks, so the
+  // connection reaches libmicrohttpd with every byte; each connection carries one request
+  // (answers say Connection: close), so every request passes the gate.
+  struct Pending {
+    sockaddr_storage address{};
+    socklen_t address_size = 0;
+    std::chrono::steady_clock::time_point accepted, last_input;
+    bool draining = false;  ///< refused: reading what still comes, so the answer is not lost to a reset
+    std::chrono::steady_clock::time_point drain_until;
+  };
+  int epoll_fd = -1;
+  std::atomic<bool> gate_stopping{false};
+  std::thread gate;
+  std::unordered_map<int, Pending> pending;  // the gate's thread only
+
+  HeadLimits head_limits() const { return HeadLimits{limits.max_head, limits.max_headers}; }
+
+  void gate_loop() {
+    lower_this_thread_priority();
+    std::string peeked(limits.max_head, '\0');
+    epoll_event events[64];
+    while (!gate_stopping) {
+      const int n = ::epoll_wait(epoll_fd, events, 64, 50);
+      for (int i = 0; i < n; ++i) {
+        if (events[i].data.fd == listen_fd)
+          accept_all();
+        else
+          on_readable(events[i].data.fd, peeked);
+      }
+      sweep_pending();
+    }
+    for (const auto& entry : pending) ::close(entry.first);
+    pending.clear();
+  }
+
+  void accept_all() {
+    for (;;) {
+      Pending p;
+      p.address_size = sizeof p.address;
+      const int fd = ::accept4(listen_fd, reinterpret_cast<sockaddr*>(&p.address), &p.address_size,
+                               SOCK_NONBLOCK | SOCK_CLOEXEC);
+      if (fd < 0) return;
+      if (!room_for(p.address)) {
+        ::close(fd);  // at the connection limit: refused at accept
+        continue;
+      }
+      p.accepted = p.last_input = std::chrono::steady_clock::now();
+      epoll_event ev{};
+      ev.events = EPOLLIN | EPOLLET | EPOLLRDHUP;  // edge-triggered: peeked bytes stay readable
+      ev.data.fd = fd;
+      if (::epoll_ctl(epoll_fd, EPOLL_CTL_ADD, fd, &ev) != 0) {
+        ::close(fd);
+        continue;
+      }
+      pending.emplace(fd, p);
+    }
+  }
+
+  /// The connection limits count the gate's connections and libmicrohttpd's together.
+  bool room_for(const sockaddr_storage& address) const {
+    const auto* info = MHD_get_daemon_info(daemon, MHD_DAEMON_INFO_CURRENT_CONNECTIONS);
+    if (pending.size() + (info ? info->num_connections : 0) >= limits.max_connections) return false;
+    if (limits.max_connections_per_ip == 0 || address.ss_family != AF_INET) return true;
+    const auto ip = reinterpret_cast<const sockaddr_in&>(address).sin_addr.s_addr;
+    std::size_t same = 0;
+    for (const auto& [fd, p] : pending)
+      if (p.address.ss_family == AF_INET && reinterpret_cast<const sockaddr_in&>(p.address).sin_addr.s_addr == ip) ++same;
+    return same < limits.max_connections_per_ip;
+  }
+
+  void on_readable(int fd, std::string& peeked) {
+    const auto it = pending.find(fd);
+    if (it == pending.end()) return;
+    if (it->second.draining) {
+      if (!discard_input(fd)) close_pending(it);
+      return;
+    }
+    const auto n = ::recv(fd, peeked.data(), peeked.size(), MSG_PEEK);
+    if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) {
+      close_pending(it);
+      return;
+    }
+    if (n < 0) return;
+    it->second.last_input = std::chrono::steady_clock::now();
+    const auto verdict = check_head(std::string_view(peeked.data(), static_cast<std::size_t>(n)), head_limits());
+    if (verdict.kind == HeadVerdict::Kind::Refused)
+      refuse(it, verdict.status, verdict.reason);
+    else if (verdict.kind == HeadVerdict::Kind::Complete)
+      hand_over(it);
+  }
+
+  void hand_over(std::unordered_map<int, Pending>::iterator it) {
+    const int fd = it->first;
+    const Pending p = it->second;
+    pending.erase(it);
+    ::epoll_ctl(epoll_fd, EPOLL_CTL_DEL, fd, nullptr);
+    {
+      std::lock_guard lk(mu);
+      handed[fd] = p.accepted;
+    }
+    // On failure (its own limits) libmicrohttpd has closed the socket.
+    if (MHD_add_connection(daemon, fd, reinterpret_cast<const sockaddr*>(&p.address), p.address_size) != MHD_YES) {
+      std::lock_guard lk(mu);
+      handed.erase(fd);
+    }
+  }
+
+  /// Answers with a JSON error, then reads (and drops) what the client still sends for a while.
+  void refuse(std::unordered_map<int, Pending>::iterator it, int status, const std::string& reason) {
+    const int fd = it->first;
+    discard_input(fd);
+    send_error(fd, status, reason);
+    ::shutdown(fd, SHUT_WR);
+    it->second.draining = true;
+    it->second.drain_until = std::chrono::steady_clock::now() + std::chrono::seconds(1);
+  }
+
+  /// Reads what is there; false once the client has closed.
+  static bool discard_input(int fd) {
+    char buf[16384];
+    for (int i = 0; i < 64; ++i) {
+      const auto n = ::recv(fd, buf, sizeof buf, MSG_DONTWAIT);
+      if (n == 0) return false;
+      if (n < 0) return errno == EAGAIN || errno == EINTR;
+    }
+    return true;
+  }
+
+  static void send_error(int fd, int status, const std::string& reason) {
+    const auto body = error_body(reason);
+    const char* phrase = MHD_get_reason_phrase_for(static_cast<unsigned>(status));
+    const auto text = "HTTP/1.1 " + std::to_string(status) + " " + phrase +
+                      "\r\nContent-Type: application/json\r\nContent-Length: " + std::to_string(body.size()) +
+                      "\r\nConnection: close\r\n\r\n" + body;
+    [[maybe_unused]] const auto sent = ::send(fd, text.data(), text.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+  }
+
+  void close_pending(std::unordered_map<int, Pending>::iterator it) {
+    ::close(it->first);  // closing removes it from the epoll set
+    pending.erase(it);
+  }
+
+  void sweep_pending() {
+    const auto now = std::chrono::steady_clock::now();
+    for (auto it = pending.begin(); it != pending.end();) {
+      auto next = std::next(it);
+      if (it->second.draining) {
+        if (now >= it->second.drain_until) close_pending(it);
+      } else if (now - it->second.accepted >= limits.request_deadline) {
+        refuse(it, 408, deadline_reason());
+      } else if (now - it->second.last_input >= std::chrono::seconds(limits.idle_timeout_s)) {
+        close_pending(it);  // silent: closed, as libmicrohttpd closes an idle connection
+      }
+      it = next;
+    }
+  }
+
+  std::string deadline_reason() const {
+    return "the request was not complete within " + std::to_string(limits.request_deadline.count()) +
+           " ms of connecting";
+  }
+
+  // ---- connections libmicrohttpd holds: the whole-request deadline --------------------------
+  static void on_connection(void* cls, MHD_Connection* c, void** socket_context, MHD_ConnectionNotificationCode code) {
+    auto* self = static_cast<Impl*>(cls);
+    std::lock_guard lk(self->mu);
+    if (code == MHD_CONNECTION_NOTIFY_STARTED) {
+      const auto* info = MHD_get_connection_info(c, MHD_CONNECTION_INFO_CONNECTION_FD);
+      auto* t = new Tracked;
+      t->fd = info ? info->connect_fd : -1;
+      const auto h = self->handed.find(t->fd);
+      t->accepted = h != self->handed.end() ? h->second : std::chrono::steady_clock::now();
+      if (h != self->handed.end()) self->handed.erase(h);
+      *socket_context = t;
+      self->tracked.insert(t);
+    } else if (auto* t = static_cast<Tracked*>(*socket_context)) {
+      // Before libmicrohttpd closes the socket: the sweep never touches a closed (reused) fd.
+      self->tracked.erase(t);
+      delete t;
+      *socket_context = nullptr;
+    }
+  }
+
+  /// The request is complete or answered (under mu).
+  static void request_done(Exchange* ex) {
+    if (ex->tracked) ex->tracked->done = true;
+  }
+
+  /// Connections whose request is still incomplete past the deadline (a client trickling bytes
+  /// keeps resetting the idle timeout): a 408, then the socket is shut down and libmicrohttpd
+  /// closes it. Only while it still reads the request, so nothing of its own is being written.
+  void sweep_tracked() {
+    const auto now = std::chrono::steady_clock::now();
+    for (auto* t : tracked)
+      if (!t->done && now - t->accepted >= limits.request_deadline) {
+        t->done = true;
+        send_error(t->fd, 408, deadline_reason());
+        ::shutdown(t->fd, SHUT_RDWR);
+      }
+  }
 
   // ---- the connection thread ------------------------------------------------------------------
   static MHD_Result on_request(void* cls, MHD_Connection* c, const char* url, const char* method, const char*,
@@ -134,6 +352,8 @@ struct Server::Impl {
       *con_cls = ex;
       ex->server_mu = &mu;
       ex->connection = c;
+      if (const auto* info = MHD_get_connection_info(c, MHD_CONNECTION_INFO_SOCKET_CONTEXT))
+        ex->tracked = static_cast<Tracked*>(info->socket_context);
       ex->request.method = method;
       ex->request.path = url;
       MHD_get_connection_values_n(c, MHD_HEADER_KIND, &Impl::collect, &ex->request.headers);
@@ -141,6 +361,10 @@ struct Server::Impl {
       if (auto refusal = screen(ex->request); refusal.status != 0) {
         ex->phase = Exchange::Phase::Refused;
         ex->response = std::move(refusal);
+        {
+          std::lock_guard lk(mu);
+          request_done(ex);
+        }
         return send(ex);  // before any body byte is read
       }
       return MHD_YES;
@@ -165,6 +389,7 @@ struct Server::Impl {
     switch (ex->phase) {
       case Exchange::Phase::Reading: {
         std::lock_guard lk(mu);
+        request_done(ex);
         if (stopping) {
           ex->response = error(503, "the server is stopping");
         } else if (queue.size() >= limits.max_queued) {
@@ -188,10 +413,8 @@ struct Server::Impl {
     return MHD_YES;
   }
 
-  /// What is checked once the headers are in.
+  /// What is checked once the headers are in (the gate has checked their syntax and count).
   Response screen(const Request& r) const {
-    if (r.headers.size() > limits.max_headers)
-      return error(431, "more than " + std::to_string(limits.max_headers) + " header fields");
     if (const auto* enc = r.header("Content-Encoding"); enc && !same_name(*enc, "identity"))
       return error(415, "compressed bodies are not accepted (Content-Encoding: " + *enc + ")");
     if (const auto* len = r.header("Content-Length")) {
@@ -225,6 +448,7 @@ struct Server::Impl {
     }
     if (!r) return MHD_NO;
     MHD_add_response_header(r, "Content-Type", res.type.c_str());
+    MHD_add_response_header(r, "Connection", "close");  // one request per connection: each passes the gate
     for (const auto& [k, v] : res.headers) MHD_add_response_header(r, k.c_str(), v.c_str());
     const auto ok = MHD_queue_response(ex->connection, static_cast<unsigned>(res.status), r);
     MHD_destroy_response(r);
@@ -296,6 +520,7 @@ struct Server::Impl {
     std::unique_lock lk(mu);
     while (!stopping) {
       tick_cv.wait_for(lk, std::chrono::milliseconds(50), [this] { return stopping; });
+      sweep_tracked();
       for (auto* ex : streams)
         if (ex->suspended) {
           ex->suspended = false;
@@ -321,7 +546,7 @@ std::string Server::listen(const std::string& address, int port) {
   a.sin_family = AF_INET;
   a.sin_port = htons(static_cast<std::uint16_t>(port));
   if (::inet_pton(AF_INET, address.c_str(), &a.sin_addr) != 1) return "'" + address + "' is not an IPv4 address";
-  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
   if (fd < 0) return "cannot open a socket";
   const int one = 1;
   ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &one, sizeof one);
@@ -340,14 +565,23 @@ void Server::start() {
   auto& s = *impl_;
   if (s.daemon || s.listen_fd < 0) return;
   s.stopping = false;
+  // The gate accepts (MHD_USE_NO_LISTEN_SOCKET); suspend/resume brings the inter-thread channel
+  // MHD_add_connection needs.
   s.daemon = MHD_start_daemon(
-      MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME, 0, nullptr, nullptr, &Impl::on_request,
-      &s, MHD_OPTION_LISTEN_SOCKET, s.listen_fd, MHD_OPTION_CONNECTION_LIMIT, s.limits.max_connections,
+      MHD_USE_INTERNAL_POLLING_THREAD | MHD_USE_EPOLL | MHD_ALLOW_SUSPEND_RESUME | MHD_USE_NO_LISTEN_SOCKET, 0, nullptr,
+      nullptr, &Impl::on_request, &s, MHD_OPTION_CONNECTION_LIMIT, s.limits.max_connections,
       MHD_OPTION_PER_IP_CONNECTION_LIMIT, s.limits.max_connections_per_ip, MHD_OPTION_CONNECTION_TIMEOUT,
       s.limits.idle_timeout_s, MHD_OPTION_CONNECTION_MEMORY_LIMIT, s.limits.connection_memory,
-      MHD_OPTION_NOTIFY_COMPLETED, &Impl::on_completed, &s, MHD_OPTION_END);
+      MHD_OPTION_NOTIFY_COMPLETED, &Impl::on_completed, &s, MHD_OPTION_NOTIFY_CONNECTION, &Impl::on_connection, &s,
+      MHD_OPTION_END);
   if (!s.daemon) return;
-  s.listen_fd = -1;  // the daemon owns it now
+  s.epoll_fd = ::epoll_create1(EPOLL_CLOEXEC);
+  epoll_event ev{};
+  ev.events = EPOLLIN;
+  ev.data.fd = s.listen_fd;
+  ::epoll_ctl(s.epoll_fd, EPOLL_CTL_ADD, s.listen_fd, &ev);
+  s.gate_stopping = false;
+  s.gate = std::thread([&s] { s.gate_loop(); });
   for (std::size_t i = 0; i < s.limits.workers; ++i) s.workers.emplace_back([&s] { s.work(); });
   s.ticker = std::thread([&s] { s.tick(); });
 }
@@ -355,6 +589,10 @@ void Server::start() {
 void Server::stop() {
   auto& s = *impl_;
   if (!s.daemon) return;
+  s.gate_stopping = true;  // no new connections reach the daemon
+  if (s.gate.joinable()) s.gate.join();
+  ::close(s.epoll_fd);
+  s.epoll_fd = -1;
   {
     std::lock_guard lk(s.mu);
     s.stopping = true;

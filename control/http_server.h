@@ -2,13 +2,19 @@
 // interface of our own, so the routes never see the library. Why this library and how it is
 // bounded: docs/architecture.md (the control plane) and docs/api.md (limits).
 //
-// Threads: one epoll thread owns every connection (reading headers and bodies, writing answers),
-// so a silent or slow client costs a socket and a bounded buffer, never a thread. A complete
-// request is handed to a fixed pool of workers (handlers may wait on the simulation); its
-// connection is suspended meanwhile. Requests wait in a bounded queue: beyond it, 503.
+// Threads: a gate thread accepts and peeks at each connection until its head (request line and
+// headers) is in, refuses what libmicrohttpd could not parse (control/http_head.h) and hands the
+// rest over. One libmicrohttpd epoll thread then owns every connection (reading headers and
+// bodies, writing answers), so a silent or slow client costs a socket and a bounded buffer, never
+// a thread. A complete request is handed to a fixed pool of workers (handlers may wait on the
+// simulation); its connection is suspended meanwhile. Requests wait in a bounded queue: beyond it,
+// 503. A ticker thread polls the streams and closes connections past the whole-request deadline.
+// One request per connection (Connection: close), so every request passes the gate.
 //
-// Checked before a handler runs, with a JSON error: header count (431), Content-Encoding (415),
-// body size for every framing, chunked included (413), and the admission check the owner gives
+// Every refusal is a JSON error: at the gate, a malformed request line or header (400), an HTTP
+// version other than 1.0/1.1 (505), a request line past the head limit (414), a head past it or
+// too many fields (431), Transfer-Encoding (411), the deadline (408); before a handler runs,
+// Content-Encoding (415), a body over the limit (413), and the admission check the owner gives
 // (Host/Origin, 403), which runs once the headers are in and before any body is read.
 #pragma once
 
@@ -57,12 +63,18 @@ struct Response {
 
 /// Limits of one server (docs/api.md states them).
 struct Limits {
-  std::size_t max_body = 64 * 1024;           ///< request body, any framing
-  std::size_t max_headers = 64;               ///< header fields per request
-  std::size_t connection_memory = 32 * 1024;  ///< request line + headers (and the read buffer)
-  unsigned max_connections = 1024;
+  std::size_t max_body = 64 * 1024;  ///< request body (Content-Length; other framings are refused)
+  std::size_t max_headers = 64;      ///< header fields per request (and query parameters, cookies)
+  std::size_t max_head = 16 * 1024;  ///< request line + header block
+  /// libmicrohttpd's memory per connection: room for the largest head the gate lets through, its
+  /// parsed fields and the read buffer.
+  std::size_t connection_memory = 64 * 1024;
+  unsigned max_connections = 1024;      ///< the gate's and libmicrohttpd's together
   unsigned max_connections_per_ip = 0;  ///< 0 = no per-address limit
   unsigned idle_timeout_s = 10;         ///< a connection that sends nothing this long is closed
+  /// From accept to the whole request (head and body) in: a client trickling bytes keeps the
+  /// idle timeout from firing, not this one. Beyond: 408 and the connection is closed.
+  std::chrono::milliseconds request_deadline{10000};
   std::size_t workers = 8;
   std::size_t max_queued = 64;  ///< complete requests waiting for a worker; beyond: 503
 };

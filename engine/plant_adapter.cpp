@@ -25,10 +25,6 @@ class PhysicsPlant final : public PlantModel {
   plant::Plant plant_;
 };
 
-SourceMark convert(const plant::SourceMark& m, const std::string& file) {
-  return SourceMark{m.file.empty() ? file : m.file, m.line, m.column};
-}
-
 plant::PlantDescription reference_with_changes(const YAML::Node& section, const std::string& file) {
   MapReader r(section, file, "plant");
   if (!read_bool(r.require("reference"), file, "reference"))
@@ -48,8 +44,8 @@ plant::PlantDescription reference_with_changes(const YAML::Node& section, const 
       plant::ParameterSetting s;
       s.name = name.substr(dot + 1);
       s.value = read_number(kv.second, file, name);
-      s.name_mark = plant::SourceMark{file, mark_of(kv.first, file).line, mark_of(kv.first, file).column};
-      s.value_mark = plant::SourceMark{file, mark_of(kv.second, file).line, mark_of(kv.second, file).column};
+      s.name_mark = mark_of(kv.first, file);
+      s.value_mark = mark_of(kv.second, file);
       std::erase_if(component->parameters, [&](const plant::ParameterSetting& o) { return o.name == s.name; });
       component->parameters.push_back(s);
     }
@@ -68,8 +64,9 @@ std::unique_ptr<PlantModel> make_physics_plant(const YAML::Node& section, const 
     plant::validate(d);
     return std::make_unique<PhysicsPlant>(d);
   } catch (const plant::DescriptionError& e) {
-    const auto& diag = e.diagnostic();
-    throw LoadError(convert(diag.mark, file), diag.reason);
+    auto mark = e.diagnostic().mark;
+    if (mark.file.empty()) mark.file = file;  // a piece built in code: point at the scenario
+    throw LoadError(mark, e.diagnostic().reason);
   }
 }
 

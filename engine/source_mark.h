@@ -6,17 +6,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/source_mark.h"
+
 namespace scenario {
 
-/// 1-based line and column; 0 = not from a file (built in code, or a command-line override).
-struct SourceMark {
-  std::string file;
-  int line = 0;
-  int column = 0;
-
-  /// "file:line:col" (or "file" / "<command line>" when the position is unknown).
-  std::string to_string() const;
-};
+/// The project's one source mark (sim/source_mark.h).
+using sim::SourceMark;
 
 class LoadError : public std::runtime_error {
  public:

@@ -4,15 +4,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "sim/source_mark.h"
+
 namespace plant {
 
-/// Where a piece of a plant description was written. Line and column are 1-based; 0 means the
-/// piece was not read from a file (a description built in code).
-struct SourceMark {
-  std::string file;
-  int line = 0;
-  int column = 0;
-};
+/// Where a piece of a plant description was written (0: built in code): the project's one mark.
+using sim::SourceMark;
 
 /// A reason, printed as `file:line:col: reason` when the mark is known.
 struct Diagnostic {

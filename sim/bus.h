@@ -119,7 +119,6 @@ class Bus {
     tx_depth_ = depth == 0 ? 1 : depth;
     unsettle();
   }
-  std::size_t tx_queue_depth() const { return tx_depth_; }
   static constexpr std::size_t kDefaultTxQueue = 32;
   /// The sliding window of load().
   static constexpr int kLoadWindowMs = 100;

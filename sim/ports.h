@@ -31,11 +31,4 @@ inline const Port* find_port(const PortList& ports, std::string_view name) {
   return nullptr;
 }
 
-/// One connection from an output to an input, copied once per tick.
-struct Wire {
-  const double* from;
-  double* to;
-  void transfer() const { *to = *from; }
-};
-
 }  // namespace sim

@@ -51,6 +51,7 @@ class HttpServer : public ::testing::Test {
     control::http::Limits l;
     l.max_body = 1024;
     l.max_headers = 16;
+    l.max_head = 4 * 1024;
     l.connection_memory = 16 * 1024;
     l.idle_timeout_s = 1;
     l.workers = 2;
@@ -88,23 +89,140 @@ std::string chunked_post(std::size_t bytes) {
   return r + "0\r\n\r\n";
 }
 
-TEST_F(HttpServer, ChunkedBodyWithinTheLimitReachesTheHandler) {
-  start();
-  const auto r = exchange(chunked_post(768));
-  EXPECT_EQ(RawConnection::status(r), 200) << r;
-  EXPECT_EQ(nlohmann::json::parse(RawConnection::body(r))["bytes"], 768);
+/// The status and JSON reason of a refusal; "" when the body is not a JSON error.
+std::string reason_of(const std::string& response) {
+  const auto j = nlohmann::json::parse(RawConnection::body(response), nullptr, false);
+  return j.is_object() && j.contains("error") && j["error"].is_string() ? j["error"].get<std::string>() : "";
 }
 
-TEST_F(HttpServer, ChunkedBodyOverTheLimitIs413AndNeverHandled) {
+TEST_F(HttpServer, ChunkedBodiesAre411BeforeTheBodyIsRead) {
   start();
-  const auto r = exchange(chunked_post(4096));
-  EXPECT_EQ(RawConnection::status(r), 413) << r;
-  EXPECT_TRUE(is_json(RawConnection::body(r)));
-  // Far over the limit: the connection is closed without reading it all.
-  RawConnection big(server_->port());
-  big.send(chunked_post(1 << 20));
-  EXPECT_TRUE(big.closed_by_peer(std::chrono::milliseconds(3000)));
+  const auto r = exchange(chunked_post(768));
+  EXPECT_EQ(RawConnection::status(r), 411) << r;
+  EXPECT_NE(reason_of(r).find("Content-Length"), std::string::npos) << r;
+  // A body far over the limit: refused at its head, whatever follows.
+  const auto big = exchange(chunked_post(1 << 20));
+  EXPECT_EQ(RawConnection::status(big), 411) << big.substr(0, 200);
   EXPECT_EQ(handled_, 0);
+}
+
+/// Everything libmicrohttpd would refuse with its own HTML page is refused first, with JSON.
+TEST_F(HttpServer, MalformedFramingGetsAJsonErrorNotLibmicrohttpdsPage) {
+  start();
+  struct Case {
+    const char* what;
+    std::string request;
+    int status;
+  };
+  const std::string host = "Host: ok\r\n";
+  const std::vector<Case> cases = {
+      {"noise", std::string("\x16\x03\x01\x02\x00\x01\x00\x01\xfc\x03\x03\r\n\r\n", 15), 400},
+      {"no version", "GET /x\r\n" + host + "\r\n", 400},
+      {"two spaces", "GET  /x HTTP/1.1\r\n" + host + "\r\n", 400},
+      {"not a path", "GET x HTTP/1.1\r\n" + host + "\r\n", 400},
+      {"bad method", "G(T /x HTTP/1.1\r\n" + host + "\r\n", 400},
+      {"HTTP/2.0", "GET /x HTTP/2.0\r\n" + host + "\r\n", 505},
+      {"HTTP/0.9", "GET /x HTTP/0.9\r\n" + host + "\r\n", 505},
+      {"bad version", "GET /x HTTQ/1.1\r\n" + host + "\r\n", 400},
+      {"no Host", "GET /x HTTP/1.1\r\n\r\n", 400},
+      {"two Hosts", "GET /x HTTP/1.1\r\n" + host + host + "\r\n", 400},
+      {"no colon", "GET /x HTTP/1.1\r\n" + host + "Broken header\r\n\r\n", 400},
+      {"space in name", "GET /x HTTP/1.1\r\n" + host + "Bad Name: v\r\n\r\n", 400},
+      {"folded", "GET /x HTTP/1.1\r\n" + host + "X-A: 1\r\n  2\r\n\r\n", 400},
+      {"NUL in a value", "GET /x HTTP/1.1\r\n" + host + std::string("X-A: a\0b\r\n\r\n", 11), 400},
+      {"Content-Length not a number", "POST /x HTTP/1.1\r\n" + host + "Content-Length: 1x\r\n\r\n1", 400},
+      {"Content-Length overflows", "POST /x HTTP/1.1\r\n" + host + "Content-Length: 99999999999999999999999\r\n\r\n", 400},
+      {"negative Content-Length", "POST /x HTTP/1.1\r\n" + host + "Content-Length: -1\r\n\r\n", 400},
+      {"two Content-Lengths", "POST /x HTTP/1.1\r\n" + host + "Content-Length: 1\r\nContent-Length: 2\r\n\r\nab", 400},
+      {"bad chunk size", "POST /x HTTP/1.1\r\n" + host + "Transfer-Encoding: chunked\r\n\r\nzz\r\nab\r\n0\r\n\r\n", 411},
+      {"chunk size overflow", "POST /x HTTP/1.1\r\n" + host + "Transfer-Encoding: chunked\r\n\r\nfffffffffffffffffffff\r\n", 411},
+      {"URL too long", "GET /" + std::string(5000, 'a') + " HTTP/1.1\r\n" + host + "\r\n", 414},
+      {"too many query parameters", "GET /x?" + std::string(100 * 4, '&').replace(0, 400, [] {
+         std::string q;
+         for (int i = 0; i < 100; ++i) q += "a=" + std::to_string(i % 10) + "&";
+         return q;
+       }()) + " HTTP/1.1\r\n" + host + "\r\n", 414},
+      {"head too large", "GET /x HTTP/1.1\r\n" + host + "X-Big: " + std::string(5000, 'v') + "\r\n\r\n", 431},
+      {"too many header fields", [&] {
+         std::string r = "GET /x HTTP/1.1\r\n" + host;
+         for (int i = 0; i < 20; ++i) r += "X-" + std::to_string(i) + ": v\r\n";
+         return r + "\r\n";
+       }(), 431},
+      {"too many cookies", "GET /x HTTP/1.1\r\n" + host + "Cookie: " + [] {
+         std::string c;
+         for (int i = 0; i < 40; ++i) c += "c" + std::to_string(i) + "=1; ";
+         return c;
+       }() + "\r\n\r\n", 431},
+  };
+  for (const auto& c : cases) {
+    const auto r = exchange(c.request);
+    EXPECT_EQ(RawConnection::status(r), c.status) << c.what << ": " << r.substr(0, 300);
+    EXPECT_NE(r.find("Content-Type: application/json"), std::string::npos) << c.what;
+    EXPECT_FALSE(reason_of(r).empty()) << c.what << ": " << r.substr(0, 300);
+  }
+  EXPECT_EQ(handled_, 0);
+}
+
+/// The largest head the gate lets through is one libmicrohttpd parses (its connection memory holds
+/// it): the request reaches the handler, with the production limits.
+TEST_F(HttpServer, TheLargestAcceptedHeadReachesTheHandler) {
+  control::http::Limits limits;
+  limits.workers = 2;
+  start(limits);
+  std::string query;
+  for (std::size_t i = 0; i < limits.max_headers; ++i) query += "p" + std::to_string(i) + "=" + std::to_string(i) + "&";
+  std::string cookies;
+  for (std::size_t i = 0; i + 1 < limits.max_headers; ++i) cookies += "c" + std::to_string(i) + "=1;";
+  std::string head = "GET /x?" + query + " HTTP/1.1\r\nHost: ok\r\nCookie: " + cookies + "\r\n";
+  for (std::size_t i = 3; i < limits.max_headers; ++i) head += "X-" + std::to_string(i) + ": v\r\n";
+  const auto filler = limits.max_head - head.size() - std::string("X-Fill: \r\n\r\n").size() - 1;
+  head += "X-Fill: " + std::string(filler, 'f') + "\r\n\r\n";
+  ASSERT_LT(head.size(), limits.max_head);
+  const auto r = exchange(head);
+  EXPECT_EQ(RawConnection::status(r), 200) << r.substr(0, 300);
+  EXPECT_EQ(handled_, 1);
+}
+
+/// A client trickling its head, then one trickling its body, one byte every 100 ms: each byte
+/// resets the idle timeout, the whole-request deadline (1 s here) still ends it with a 408.
+TEST_F(HttpServer, TricklingClientsMeetTheWholeRequestDeadline) {
+  auto limits = small_limits();
+  limits.idle_timeout_s = 10;
+  limits.request_deadline = std::chrono::milliseconds(1000);
+  start(limits);
+  const std::string head = "POST /x HTTP/1.1\r\nHost: ok\r\nContent-Length: 100\r\n\r\n";
+  for (const bool body_phase : {false, true}) {
+    RawConnection c(server_->port());
+    ASSERT_TRUE(c.ok());
+    const auto t0 = std::chrono::steady_clock::now();
+    std::string trickle = body_phase ? std::string(100, 'b') : head;
+    if (body_phase) c.send(head);
+    std::string r;
+    for (char byte : trickle) {
+      if (!c.send(std::string(1, byte))) break;
+      r = c.receive(std::chrono::milliseconds(100));
+      if (!r.empty()) break;
+    }
+    if (r.empty()) r = c.receive();
+    const auto waited = std::chrono::steady_clock::now() - t0;
+    EXPECT_EQ(RawConnection::status(r), 408) << (body_phase ? "body: " : "head: ") << r;
+    EXPECT_NE(reason_of(r).find("1000 ms"), std::string::npos) << r;
+    EXPECT_GE(waited, std::chrono::milliseconds(1000));
+    EXPECT_LT(waited, std::chrono::milliseconds(3000));
+    EXPECT_TRUE(c.closed_by_peer(std::chrono::milliseconds(2000)));
+  }
+  EXPECT_EQ(handled_, 0);
+}
+
+TEST_F(HttpServer, EveryAnswerClosesItsConnection) {
+  start();
+  RawConnection c(server_->port());
+  c.send("GET /x HTTP/1.1\r\nHost: ok\r\n\r\nGET /x HTTP/1.1\r\nHost: ok\r\n\r\n");  // pipelined
+  const auto r = c.receive();
+  EXPECT_EQ(RawConnection::status(r), 200) << r;
+  EXPECT_NE(r.find("Connection: close"), std::string::npos) << r;
+  EXPECT_TRUE(c.closed_by_peer(std::chrono::milliseconds(2000)));
+  EXPECT_EQ(handled_, 1);  // the second request never reached a handler without passing the gate
 }
 
 TEST_F(HttpServer, ContentLengthOverTheLimitIs413BeforeTheBody) {
@@ -140,8 +258,11 @@ TEST_F(HttpServer, EndlessHeaderIsCutOffAtTheMemoryBound) {
   bool refused = false;
   for (int i = 0; i < 64 && !refused; ++i) refused = !c.send(std::string(1024, 'a'));
   const auto r = c.receive();
-  // Answered 431 (or closed) once the header block passes the connection's memory bound.
-  EXPECT_TRUE(refused || RawConnection::status(r) == 431 || r.empty()) << r.substr(0, 200);
+  // Answered 431 with a JSON reason once the header block passes the head limit.
+  EXPECT_TRUE(refused || RawConnection::status(r) == 431) << r.substr(0, 200);
+  if (!r.empty()) {
+    EXPECT_TRUE(is_json(RawConnection::body(r))) << r.substr(0, 300);
+  }
   EXPECT_TRUE(c.closed_by_peer(std::chrono::milliseconds(3000)));
   EXPECT_EQ(handled_, 0);
 }

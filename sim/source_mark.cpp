@@ -1,6 +1,6 @@
-#include "engine/source_mark.h"
+#include "sim/source_mark.h"
 
-namespace scenario {
+namespace sim {
 
 std::string SourceMark::to_string() const {
   const std::string f = file.empty() ? "<command line>" : file;
@@ -8,4 +8,4 @@ std::string SourceMark::to_string() const {
   return f + ":" + std::to_string(line) + ":" + std::to_string(column);
 }
 
-}  // namespace scenario
+}  // namespace sim
