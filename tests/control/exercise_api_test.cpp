@@ -45,6 +45,12 @@ class ExerciseApi : public ::testing::Test {
     ASSERT_EQ(status(r), 200);
     ASSERT_TRUE(LivePlant::json_of(r)["ok"].get<bool>()) << r->body;
   }
+  json sdo_read(const std::string& node, int index, int sub) {
+    const auto r = p().post("/api/nodes/" + node + "/sdo/read", {{"index", index}, {"sub", sub}});
+    EXPECT_EQ(status(r), 200);
+    p().run_ms(10);
+    return LivePlant::json_of(r);
+  }
   /// Every step done, each at a virtual time no earlier than the one before.
   void expect_all_done() {
     const auto e = get("/api/exercise");
@@ -128,6 +134,38 @@ TEST_F(ExerciseApi, HeartbeatWatchingTheWrongNodeLeavesTheStepOpen) {
   sdo("wdga", 0x1016, 1, 0x000301F4);  // node 3, the MD2, which sends no heartbeat
   p().run_ms(1000);
   EXPECT_EQ(done_steps(), 1u);
+}
+
+TEST_F(ExerciseApi, Cia406Solved) {
+  select("cia406");
+  nmt("start", "wdga");
+  EXPECT_EQ(done_steps(), 1u);
+  sdo("wdga", 0x6003, 0, 100000);
+  p().run_ms(20);
+  EXPECT_EQ(done_steps(), 2u);
+  EXPECT_EQ(sdo_read("wdga", 0x6400, 1)["value"], 2);  // above the default high limit
+  EXPECT_EQ(done_steps(), 2u);
+  sdo("wdga", 0x6402, 1, 200000);
+  EXPECT_EQ(sdo_read("wdga", 0x6400, 1)["value"], 0);
+  EXPECT_EQ(done_steps(), 3u);
+  ASSERT_EQ(status(p().post("/api/faults", {{"device_fault", {{"node", "wdga"}, {"fault", "position_error"}}}})), 200);
+  p().run_ms(20);
+  EXPECT_EQ(sdo_read("wdga", 0x6503, 0)["value"], 1);
+  expect_all_done();
+}
+
+TEST_F(ExerciseApi, Cia406WrongPresetAndLimitLeaveTheStepsOpen) {
+  select("cia406");
+  nmt("start", "wdga");
+  sdo("wdga", 0x6003, 0, 10000);  // another value than the step asks for
+  p().run_ms(20);
+  EXPECT_EQ(done_steps(), 1u);
+  sdo("wdga", 0x6003, 0, 100000);
+  p().run_ms(20);
+  sdo("wdga", 0x6402, 1, 200000);
+  sdo("wdga", 0x6401, 1, 150000);  // the low limit above the position too: 04h, below
+  EXPECT_EQ(sdo_read("wdga", 0x6400, 1)["value"], 4);
+  EXPECT_EQ(done_steps(), 2u);
 }
 
 TEST_F(ExerciseApi, SelectingAgainStartsOver) {
