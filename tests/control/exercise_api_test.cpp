@@ -51,6 +51,15 @@ class ExerciseApi : public ::testing::Test {
     p().run_ms(10);
     return LivePlant::json_of(r);
   }
+  void input(const std::string& node, const std::string& name, double value) {
+    ASSERT_EQ(status(p().post("/api/nodes/" + node + "/inputs", {{"name", name}, {"value", value}})), 200);
+    p().run_ms(20);
+  }
+  void clear_fault(const httplib::Result& injected) {
+    const auto id = LivePlant::json_of(injected)["id"].get<int>();
+    ASSERT_EQ(status(p().http().Delete(("/api/faults/" + std::to_string(id)).c_str())), 200);
+    p().run_ms(20);
+  }
   /// Every step done, each at a virtual time no earlier than the one before.
   void expect_all_done() {
     const auto e = get("/api/exercise");
@@ -122,8 +131,8 @@ TEST_F(ExerciseApi, HeartbeatSolved) {
   ASSERT_EQ(status(f), 200);
   p().run_ms(1000);
   EXPECT_EQ(done_steps(), 3u);
-  ASSERT_EQ(status(p().http().Delete(("/api/faults/" + std::to_string(LivePlant::json_of(f)["id"].get<int>())).c_str())), 200);
-  p().run_ms(500);
+  clear_fault(f);
+  p().run_ms(480);
   expect_all_done();
 }
 
@@ -166,6 +175,40 @@ TEST_F(ExerciseApi, Cia406WrongPresetAndLimitLeaveTheStepsOpen) {
   sdo("wdga", 0x6401, 1, 150000);  // the low limit above the position too: 04h, below
   EXPECT_EQ(sdo_read("wdga", 0x6400, 1)["value"], 4);
   EXPECT_EQ(done_steps(), 2u);
+}
+
+TEST_F(ExerciseApi, VtvpcdSolved) {
+  select("vtvpcd");
+  input("vtvpcd", "enable", 0);
+  EXPECT_EQ(get("/api/nodes/vtvpcd")["device"]["state"], "NOT_ENABLED");
+  input("vtvpcd", "enable", 1);
+  EXPECT_EQ(done_steps(), 2u);
+  const auto f = p().post("/api/faults", {{"device_fault", {{"node", "vtvpcd"}, {"fault", "pressure_a_sensor_break"}}}});
+  ASSERT_EQ(status(f), 200);
+  p().run_ms(20);
+  EXPECT_EQ(get("/api/nodes/vtvpcd")["device"]["state"], "FAULT_STOP");
+  EXPECT_EQ(done_steps(), 3u);
+  clear_fault(f);
+  EXPECT_EQ(get("/api/nodes/vtvpcd")["device"]["state"], "FAULT_STOP");  // latched
+  EXPECT_EQ(done_steps(), 3u);
+  input("vtvpcd", "enable", 0);
+  input("vtvpcd", "enable", 1);
+  EXPECT_EQ(get("/api/nodes/vtvpcd")["device"]["state"], "RUNNING");
+  expect_all_done();
+}
+
+TEST_F(ExerciseApi, VtvpcdAnEdgeBeforeTheFaultIsMendedAcknowledgesNothing) {
+  select("vtvpcd");
+  input("vtvpcd", "enable", 0);
+  input("vtvpcd", "enable", 1);
+  const auto f = p().post("/api/faults", {{"device_fault", {{"node", "vtvpcd"}, {"fault", "pressure_a_sensor_break"}}}});
+  ASSERT_EQ(status(f), 200);
+  p().run_ms(20);
+  input("vtvpcd", "enable", 0);
+  input("vtvpcd", "enable", 1);
+  clear_fault(f);
+  EXPECT_EQ(get("/api/nodes/vtvpcd")["device"]["state"], "FAULT_STOP");
+  EXPECT_EQ(done_steps(), 3u);
 }
 
 TEST_F(ExerciseApi, SelectingAgainStartsOver) {
