@@ -93,7 +93,11 @@ function renderRow(r: StepRow): HTMLElement {
 
 /// Adds the exercise panel at the top of `host` and keeps it current.
 export function mountExerciseView(host: HTMLElement, periodMs = 1000): void {
-  const section = el('section', { id: 'exercise-section', 'aria-labelledby': 'exercise-h', 'data-testid': 'exercise', hidden: true });
+  // The whole width of the page's grid: a chooser alone stays one line, and the panels below keep
+  // their places whether an exercise is open or not.
+  const section = el('section', {
+    id: 'exercise-section', 'aria-labelledby': 'exercise-h', 'data-testid': 'exercise', hidden: true, style: 'grid-column: 1 / -1',
+  });
   const choose = el('select', { 'aria-label': 'exercise', 'data-testid': 'exercise-choice' });
   const status = el('span', { class: 'exercise-status', role: 'status' });
   const body = el('div', { class: 'exercise-body' });
