@@ -14,7 +14,7 @@ import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { after, before, test } from 'node:test';
-import { BrowserContext, chromium, Page } from 'playwright-core';
+import { Browser, BrowserContext, chromium, Page } from 'playwright-core';
 
 function option(name: string): string | undefined {
   const i = process.argv.indexOf(name);
@@ -169,8 +169,6 @@ test('NMT start from the page brings every node to OPERATIONAL', async () => {
   for (const name of ['vtvpcd', 'dsv', 'md2', 'hlt', 'wdga']) {
     await page.waitForFunction((n) => document.querySelector(`[data-testid=nmt-${n}]`)?.textContent === 'OPERATIONAL', name);
   }
-  await byTestId('node-row-dsv').click();
-  await page.waitForSelector('[data-testid=diagram-nmt] [data-state=OPERATIONAL][data-current=true]');
   // The trace decodes the NMT command the page sent.
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=NMT] td.decoded')]
     .some((td) => /start/i.test(td.textContent ?? '')));
@@ -178,12 +176,7 @@ test('NMT start from the page brings every node to OPERATIONAL', async () => {
 
 test('control word 0x0007 by SDO drives the DSV to DEVICE_MODE_ACTIVE', async () => {
   await byTestId('node-row-dsv').click();
-  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=INIT][data-current=true]');
   await byTestId('cw-preset-0x0007').click();
-  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=DEVICE_MODE_ACTIVE][data-current=true]');
-  assert.equal(await page.locator('[data-testid=diagram-dsp408] .state.current').count(), 1);
-  await page.waitForFunction(() => /→ DEVICE_MODE_ACTIVE.*0x0007/.test(document.querySelector('[data-testid=device-last-transition]')?.textContent ?? ''));
-  assert.ok(await page.locator('[data-testid=diagram-dsp408] .edge.last').count() >= 1, 'the last transition is drawn');
   await page.waitForFunction(() => /DEVICE_MODE_ACTIVE/.test(document.querySelector('[data-testid=device-dsv]')?.textContent ?? ''));
   // The SDO download and its response, decoded with the object's name.
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td.decoded')]
@@ -198,7 +191,7 @@ test('an SDO write the node refuses shows the abort code and its text', async ()
   await byTestId('od-filter').fill('6300');
   await byTestId('od-input-6300-01').fill('20000');
   await byTestId('od-write-6300-01').click();
-  await page.waitForFunction(() => /refused: abort 0x0609003[0-2] \S/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
+  await page.waitForFunction(() => /refused by the node: abort 0x0609003[0-2] \S/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td.decoded')]
     .some((td) => /abort/i.test(td.textContent ?? '') && /0609003[0-2]/.test(td.textContent ?? '')));
   await byTestId('od-filter').fill('');
@@ -318,5 +311,82 @@ test('virtual time under the trainer: pause, one tick, run 100 ms, resume', asyn
   await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t && c.paused), t0.t_us + t0.tick_us + 100_000);
   await byTestId('clock-resume').click();
   await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
+  // The same from the keyboard: Space pauses, S steps one tick, R runs N ms, Space resumes.
+  await page.locator('body').click({ position: { x: 5, y: 5 } });
+  await page.keyboard.press(' ');
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'paused');
+  const t1 = await now();
+  await page.keyboard.press('s');
+  await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t), t1.t_us + t1.tick_us);
+  await page.keyboard.press('r');
+  await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t && c.paused), t1.t_us + t1.tick_us + 100_000);
+  await page.keyboard.press(' ');
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
   assert.deepEqual(pageErrors, []);
+});
+
+/** The panels shown (main's sections not hidden) as boxes in CSS pixels, and the page's extent. */
+async function panelBoxes(p: Page) {
+  return p.evaluate(() => ({
+    boxes: [...document.querySelectorAll('main > section')].filter((s) => getComputedStyle(s).display !== 'none').map((s) => {
+      const r = s.getBoundingClientRect();
+      return { id: s.id, x: r.x, y: r.y + window.scrollY, w: r.width, h: r.height };
+    }),
+    header: document.querySelector('header')!.getBoundingClientRect().bottom,
+    innerWidth: window.innerWidth, innerHeight: window.innerHeight,
+    scrollWidth: document.documentElement.scrollWidth, scrollHeight: document.documentElement.scrollHeight,
+  }));
+}
+
+type Box = { id: string; x: number; y: number; w: number; h: number };
+function overlaps(a: Box, b: Box): boolean {
+  const dx = Math.min(a.x + a.w, b.x + b.w) - Math.max(a.x, b.x);
+  const dy = Math.min(a.y + a.h, b.y + b.h) - Math.max(a.y, b.y);
+  return dx > 1 && dy > 1;
+}
+
+test('no panel overlaps another at 1366×768 and 1920×1080, 100 % and 150 %; the lesson view fits one screen', async () => {
+  const url = page.url().replace(/#.*$/, '');
+  await byTestId('node-row-dsv').click();
+  const browser: Browser = await chromium.launch({ executablePath: CHROMIUM, args: ['--headless', '--no-sandbox', '--disable-gpu'] });
+  try {
+    for (const [w, h] of [[1366, 768], [1920, 1080]]) {
+      for (const zoom of [1, 1.5]) {
+        for (const lesson of [false, true]) {
+          // 150 % zoom: the CSS viewport shrinks by the factor, each CSS pixel is 1.5 device pixels.
+          const ctx = await browser.newContext({ viewport: { width: Math.round(w / zoom), height: Math.round(h / zoom) }, deviceScaleFactor: zoom });
+          const p = await ctx.newPage();
+          const errors: string[] = [];
+          p.on('pageerror', (e) => errors.push(e.message));
+          await p.goto(url + (lesson ? '#lesson' : ''));
+          await p.getByTestId('node-row-dsv').waitFor({ state: 'attached' });
+          await p.waitForFunction(() => document.querySelector('[data-testid=connection]')?.textContent === 'live');
+          await p.waitForTimeout(800);  // plots drawn, the trace rendered
+          const name = `layout-${w}x${h}-${zoom * 100}${lesson ? '-lesson' : ''}`;
+          await p.screenshot({ path: join(screenshots!, `${name}.png`) });
+          const L = await panelBoxes(p);
+          for (let i = 0; i < L.boxes.length; ++i) {
+            for (let j = i + 1; j < L.boxes.length; ++j) {
+              assert.ok(!overlaps(L.boxes[i], L.boxes[j]), `${name}: ${L.boxes[i].id} overlaps ${L.boxes[j].id}: ${JSON.stringify([L.boxes[i], L.boxes[j]])}`);
+            }
+          }
+          assert.ok(L.scrollWidth <= L.innerWidth + 1, `${name}: the page is wider than the window (${L.scrollWidth} > ${L.innerWidth})`);
+          if (lesson) {
+            assert.deepEqual(L.boxes.map((b) => b.id).sort(), ['controls-section', 'detail-section', 'trace-section', 'transitions-section']);
+            assert.ok(L.scrollHeight <= L.innerHeight + 1, `${name}: the lesson view scrolls (${L.scrollHeight} > ${L.innerHeight})`);
+            for (const b of L.boxes) {
+              assert.ok(b.y >= L.header - 1 && b.y + b.h <= L.innerHeight + 1 && b.h >= 60, `${name}: ${b.id} is not on the screen: ${JSON.stringify(b)}`);
+            }
+            // large type for a projector
+            const px = await p.evaluate(() => parseFloat(getComputedStyle(document.querySelector('[data-testid=transition-list]')!).fontSize));
+            assert.ok(px >= 15, `${name}: transition list in ${px} px`);
+          }
+          assert.deepEqual(errors, []);
+          await ctx.close();
+        }
+      }
+    }
+  } finally {
+    await browser.close();
+  }
 });
