@@ -325,6 +325,23 @@ test('virtual time under the trainer: pause, one tick, run 100 ms, resume', asyn
   assert.deepEqual(pageErrors, []);
 });
 
+test('an SDO to a STOPPED node says timeout, not refused', async () => {
+  if ((await byTestId('clock-state').textContent()) === 'paused') await byTestId('clock-resume').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
+  await byTestId('node-row-dsv').click();
+  await byTestId('nmt-target').selectOption('dsv');
+  await byTestId('nmt-stop').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=nmt-dsv]')?.textContent === 'STOPPED');
+  await byTestId('od-filter').fill('1000');
+  await byTestId('od-read-1000-00').click();
+  await page.waitForFunction(() => /timeout/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
+  assert.doesNotMatch((await byTestId('od-result').textContent()) ?? '', /refused/);
+  await byTestId('od-filter').fill('');
+  await byTestId('nmt-start').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=nmt-dsv]')?.textContent === 'OPERATIONAL');
+  await byTestId('nmt-target').selectOption('');
+});
+
 /** The panels shown (main's sections not hidden) as boxes in CSS pixels, and the page's extent. */
 async function panelBoxes(p: Page) {
   return p.evaluate(() => ({
@@ -364,6 +381,7 @@ test('no panel overlaps another at 1366×768 and 1920×1080, 100 % and 150 %; th
           await p.waitForTimeout(800);  // plots drawn, the trace rendered
           const name = `layout-${w}x${h}-${zoom * 100}${lesson ? '-lesson' : ''}`;
           await p.screenshot({ path: join(screenshots!, `${name}.png`) });
+          if (docsImages && name === 'layout-1366x768-150-lesson') copyFileSync(join(screenshots!, `${name}.png`), join(docsImages, 'dashboard-lesson.png'));
           const L = await panelBoxes(p);
           for (let i = 0; i < L.boxes.length; ++i) {
             for (let j = i + 1; j < L.boxes.length; ++j) {
