@@ -332,7 +332,9 @@ struct ControlPlane::Server {
       std::vector<std::string> in;
       for (const auto& p : n.ports) {
         if (p.direction != sim::PortDirection::Input) continue;
-        inputs.push_back({{"node", n.spec->name}, {"name", p.name}, {"unit", p.unit}});
+        auto input = signal_json(p.name, p.unit, p.display);
+        input["node"] = n.spec->name;
+        inputs.push_back(std::move(input));
         in.push_back(p.name);
       }
       node_inputs.push_back(std::move(in));
@@ -342,7 +344,7 @@ struct ControlPlane::Server {
     for (std::size_t s = 0; s < cp.bridge_.signals().size(); ++s) {
       const auto& sig = cp.bridge_.signals()[s];
       signal_index[sig.name] = s;
-      signals.push_back(sig.name);
+      signals.push_back(signal_json(sig.name, sig.unit, sig.display));
     }
     json plant = json::array();
     if (auto* p = world.plant())
@@ -719,8 +721,13 @@ struct ControlPlane::Server {
       return std::make_pair(static_cast<std::int64_t>(c.scheduler.now().time_since_epoch().count()), v);
     });
     json vals = json::object();
-    for (std::size_t k = 0; k < list.size(); ++k) vals[sigs[list[k]].name] = values.second[k];
-    reply(res, 200, {{"t_us", values.first}, {"values", vals}});
+    json meta = json::array();
+    for (std::size_t k = 0; k < list.size(); ++k) {
+      const auto& sig = sigs[list[k]];
+      vals[sig.name] = values.second[k];
+      meta.push_back(signal_json(sig.name, sig.unit, sig.display));
+    }
+    reply(res, 200, {{"t_us", values.first}, {"values", vals}, {"signals", meta}});
   }
 
   void clock_control(const http::Request& req, http::Response& res) {

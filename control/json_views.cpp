@@ -8,6 +8,16 @@ namespace control {
 
 using nlohmann::json;
 
+json signal_json(const std::string& name, const std::string& unit, const sim::DisplayUnit& display) {
+  // A port without a display unit is shown in its SI unit.
+  const bool own = !display.unit.empty();
+  return {{"name", name},
+          {"unit", unit},
+          {"display_unit", own ? std::string(display.unit) : unit},
+          {"display_scale", own ? display.scale : 1.0},
+          {"display_offset", own ? display.offset : 0.0}};
+}
+
 std::string hex_string(const std::uint8_t* data, std::size_t n) {
   static constexpr char kDigits[] = "0123456789ABCDEF";
   std::string s;

@@ -7,6 +7,7 @@
 
 #include "control/live_state.h"
 #include "devices/canopen/frame_decoder.h"
+#include "sim/display_unit.h"
 
 namespace control {
 
@@ -16,6 +17,8 @@ std::string nmt_name(const NodeStatus& s);
 nlohmann::json node_json(const std::string& name, const std::string& bus, const NodeStatus& s);
 /// Frame = {"t_us","bus","id","ext","rtr","dlc","data","dir","service","node","text","candump"}.
 nlohmann::json frame_json(const CapturedFrame& f, const std::string& bus, const canopen::DecodedFrame& d);
+/// Signal = {"name","unit" (SI),"display_unit","display_scale","display_offset"}: display = si × scale + offset.
+nlohmann::json signal_json(const std::string& name, const std::string& unit, const sim::DisplayUnit& display);
 std::string hex_string(const std::uint8_t* data, std::size_t n);
 /// Parses "0F00" / "0f 00" into bytes; false if malformed (odd digits, non-hex, > max bytes).
 bool parse_hex(const std::string& text, std::vector<std::uint8_t>& out, std::size_t max_bytes);

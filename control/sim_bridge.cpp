@@ -115,9 +115,9 @@ void SimBridge::attach(const scenario::RunContext& context) {
   work_.resize(n);
   pdo_work_.assign(n, std::vector<PdoMap>(2 * kMaxPdos));
   for (const auto& node : world.nodes())
-    for (const auto& p : node.ports) signals_.push_back({node.spec->name + "." + p.name, p.unit, p.value});
+    for (const auto& p : node.ports) signals_.push_back({node.spec->name + "." + p.name, p.unit, p.value, p.display});
   if (auto* plant = world.plant())
-    for (const auto& p : plant->ports()) signals_.push_back({p.name, p.unit, p.value});
+    for (const auto& p : plant->ports()) signals_.push_back({p.name, p.unit, p.value, p.display});
   signal_rows_ = std::make_unique<SpscRing<SignalRow>>(512, SignalRow{0, std::vector<double>(signals_.size())});
 
   publish_nodes(now_us_.load(std::memory_order_relaxed), true);

@@ -30,6 +30,7 @@
 #include "engine/run_extension.h"
 #include "engine/sdo_client.h"
 #include "sim/bus.h"
+#include "sim/display_unit.h"
 
 namespace control {
 
@@ -50,8 +51,9 @@ struct ClockOptions {
 /// A plant signal the stream can sample: a port of the plant or of a node.
 struct SignalInfo {
   std::string name;  ///< "cyl.position", "dsv.solenoid_a_current"
-  std::string unit;
+  std::string unit;  ///< SI
   const double* value = nullptr;
+  sim::DisplayUnit display{};  ///< how to show it, as the port's owner says
 };
 
 struct SignalRow {

@@ -35,15 +35,15 @@ const std::array<ConnectorSpec, 2> kConnectors{{
 }};
 const std::array<SignalSpec, AxialPistonPump::kSignalCount> kSignals{{
     {"pilot_command", sim::PortDirection::Input, "1",
-     "pilot valve command -1..+1 (VT-VPCD valve CMD +-100 %); >0 swivels towards +alpha"},
-    {"swivel_angle", sim::PortDirection::Output, "1", "normalised swivel angle alpha (-1..1)"},
-    {"lvdt", sim::PortDirection::Output, "1", "swivel-angle sensor signal, lvdt_gain * alpha + lvdt_offset"},
-    {"pilot_spool_position", sim::PortDirection::Output, "1", "pilot spool position (-1..1)"},
-    {"pressure_a", sim::PortDirection::Output, "Pa", "pressure at port A"},
-    {"pressure_b", sim::PortDirection::Output, "Pa", "pressure at port B"},
-    {"drive_speed", sim::PortDirection::Output, "rad/s", "drive shaft speed"},
-    {"flow", sim::PortDirection::Output, "m^3/s", "effective flow delivered out of B (after leakage)"},
-    {"drive_torque", sim::PortDirection::Output, "N m", "torque the drive supplies, Vg alpha dp / (2 pi eta_hm)"},
+     "pilot valve command -1..+1 (VT-VPCD valve CMD +-100 %); >0 swivels towards +alpha", sim::display::percent},
+    {"swivel_angle", sim::PortDirection::Output, "1", "normalised swivel angle alpha (-1..1)", sim::display::percent},
+    {"lvdt", sim::PortDirection::Output, "1", "swivel-angle sensor signal, lvdt_gain * alpha + lvdt_offset", sim::display::percent},
+    {"pilot_spool_position", sim::PortDirection::Output, "1", "pilot spool position (-1..1)", sim::display::percent},
+    {"pressure_a", sim::PortDirection::Output, "Pa", "pressure at port A", sim::display::bar},
+    {"pressure_b", sim::PortDirection::Output, "Pa", "pressure at port B", sim::display::bar},
+    {"drive_speed", sim::PortDirection::Output, "rad/s", "drive shaft speed", sim::display::rpm},
+    {"flow", sim::PortDirection::Output, "m^3/s", "effective flow delivered out of B (after leakage)", sim::display::l_per_min},
+    {"drive_torque", sim::PortDirection::Output, "N m", "torque the drive supplies, Vg alpha dp / (2 pi eta_hm)", sim::display::newton_metre},
 }};
 
 std::string check(std::span<const double> v) {

@@ -32,6 +32,7 @@ struct SignalSpec {
   sim::PortDirection direction;
   std::string_view unit;
   std::string_view description;
+  sim::DisplayUnit display{};  ///< how an engineer reads it (the port's display unit)
 };
 
 struct ComponentType {

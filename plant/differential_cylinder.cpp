@@ -32,12 +32,12 @@ const std::array<ConnectorSpec, 2> kConnectors{{
     {"B", Domain::Fluid, false, "rod-side chamber (retracts the rod)"},
 }};
 const std::array<SignalSpec, DifferentialCylinder::kSignalCount> kSignals{{
-    {"position", sim::PortDirection::Output, "m", "piston position, 0 = fully retracted"},
-    {"velocity", sim::PortDirection::Output, "m/s", "piston velocity, positive extending"},
-    {"pressure_a", sim::PortDirection::Output, "Pa", "cap-side chamber pressure"},
-    {"pressure_b", sim::PortDirection::Output, "Pa", "rod-side chamber pressure"},
-    {"magnet_position", sim::PortDirection::Output, "m", "position + sensor_offset, for a linear position sensor"},
-    {"hydraulic_force", sim::PortDirection::Output, "N", "A_A p_A - A_B p_B"},
+    {"position", sim::PortDirection::Output, "m", "piston position, 0 = fully retracted", sim::display::mm},
+    {"velocity", sim::PortDirection::Output, "m/s", "piston velocity, positive extending", sim::display::mm_per_s},
+    {"pressure_a", sim::PortDirection::Output, "Pa", "cap-side chamber pressure", sim::display::bar},
+    {"pressure_b", sim::PortDirection::Output, "Pa", "rod-side chamber pressure", sim::display::bar},
+    {"magnet_position", sim::PortDirection::Output, "m", "position + sensor_offset, for a linear position sensor", sim::display::mm},
+    {"hydraulic_force", sim::PortDirection::Output, "N", "A_A p_A - A_B p_B", sim::display::kilonewton},
 }};
 
 std::string check(std::span<const double> v) {

@@ -27,10 +27,10 @@ const std::array<ConnectorSpec, 3> kConnectors{{
     {"shaft", Domain::Rotational, false, "output shaft, coupled rigidly to a rotary_shaft"},
 }};
 const std::array<SignalSpec, HydraulicMotor::kSignalCount> kSignals{{
-    {"pressure_a", sim::PortDirection::Output, "Pa", "pressure at port A"},
-    {"pressure_b", sim::PortDirection::Output, "Pa", "pressure at port B"},
-    {"flow", sim::PortDirection::Output, "m^3/s", "flow into port A (displacement + leakage)"},
-    {"torque", sim::PortDirection::Output, "N m", "hydraulic torque D/(2 pi) (p_A - p_B), before mechanical loss"},
+    {"pressure_a", sim::PortDirection::Output, "Pa", "pressure at port A", sim::display::bar},
+    {"pressure_b", sim::PortDirection::Output, "Pa", "pressure at port B", sim::display::bar},
+    {"flow", sim::PortDirection::Output, "m^3/s", "flow into port A (displacement + leakage)", sim::display::l_per_min},
+    {"torque", sim::PortDirection::Output, "N m", "hydraulic torque D/(2 pi) (p_A - p_B), before mechanical loss", sim::display::newton_metre},
 }};
 
 const ComponentType kType{

@@ -21,7 +21,7 @@ const std::array<ConnectorSpec, 2> kConnectors{{
     {"B", Domain::Fluid, false, "other side"},
 }};
 const std::array<SignalSpec, Orifice::kSignalCount> kSignals{{
-    {"flow", sim::PortDirection::Output, "m^3/s", "flow from A to B"},
+    {"flow", sim::PortDirection::Output, "m^3/s", "flow from A to B", sim::display::l_per_min},
 }};
 
 const ComponentType kType{

@@ -111,7 +111,7 @@ Plant::Plant(const PlantDescription& description) : max_step_(description.solver
     for (std::size_t i = 0; i < signals.size(); ++i) {
       const auto& s = signals[i];
       ports_.push_back(sim::Port{fmt::format("{}.{}", c->name(), s.name), s.direction, std::string(s.unit),
-                                 c->signal(i), std::string(s.description)});
+                                 c->signal(i), std::string(s.description), s.display});
     }
   }
   for (auto& c : components_) c->publish(state, 0.0);

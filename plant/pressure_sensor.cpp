@@ -13,7 +13,7 @@ const std::array<ConnectorSpec, 1> kConnectors{{
     {"port", Domain::Fluid, false, "the node measured"},
 }};
 const std::array<SignalSpec, PressureSensor::kSignalCount> kSignals{{
-    {"pressure", sim::PortDirection::Output, "Pa", "measured gauge pressure"},
+    {"pressure", sim::PortDirection::Output, "Pa", "measured gauge pressure", sim::display::bar},
 }};
 
 const ComponentType kType{

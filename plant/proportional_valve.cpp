@@ -34,11 +34,11 @@ const std::array<ConnectorSpec, 4> kConnectors{{
     {"B", Domain::Fluid, false, "service port B (opened to P by solenoid B)"},
 }};
 const std::array<SignalSpec, ProportionalValve::kSignalCount> kSignals{{
-    {"solenoid_a_current", sim::PortDirection::Input, "A", "current in solenoid A (drives the spool towards P->A)"},
-    {"solenoid_b_current", sim::PortDirection::Input, "A", "current in solenoid B (drives the spool towards P->B)"},
-    {"spool_position", sim::PortDirection::Output, "1", "spool position, -1 (full P->B) .. +1 (full P->A)"},
-    {"flow_a", sim::PortDirection::Output, "m^3/s", "flow out of port A into its line"},
-    {"flow_b", sim::PortDirection::Output, "m^3/s", "flow out of port B into its line"},
+    {"solenoid_a_current", sim::PortDirection::Input, "A", "current in solenoid A (drives the spool towards P->A)", sim::display::mA},
+    {"solenoid_b_current", sim::PortDirection::Input, "A", "current in solenoid B (drives the spool towards P->B)", sim::display::mA},
+    {"spool_position", sim::PortDirection::Output, "1", "spool position, -1 (full P->B) .. +1 (full P->A)", sim::display::percent},
+    {"flow_a", sim::PortDirection::Output, "m^3/s", "flow out of port A into its line", sim::display::l_per_min},
+    {"flow_b", sim::PortDirection::Output, "m^3/s", "flow out of port B into its line", sim::display::l_per_min},
 }};
 
 std::string check(std::span<const double> v) {

@@ -19,7 +19,7 @@ const std::array<ConnectorSpec, 2> kConnectors{{
     {"T", Domain::Fluid, false, "return to tank"},
 }};
 const std::array<SignalSpec, ReliefValve::kSignalCount> kSignals{{
-    {"flow", sim::PortDirection::Output, "m^3/s", "flow P->T through the valve"},
+    {"flow", sim::PortDirection::Output, "m^3/s", "flow P->T through the valve", sim::display::l_per_min},
 }};
 
 const ComponentType kType{

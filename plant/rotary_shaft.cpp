@@ -19,8 +19,8 @@ const std::array<ConnectorSpec, 1> kConnectors{{
     {"flange", Domain::Rotational, true, "coupling for motors (owns the rigid body)"},
 }};
 const std::array<SignalSpec, RotaryShaft::kSignalCount> kSignals{{
-    {"angle", sim::PortDirection::Output, "rad", "shaft angle, unbounded (counts on over many turns)"},
-    {"speed", sim::PortDirection::Output, "rad/s", "shaft speed"},
+    {"angle", sim::PortDirection::Output, "rad", "shaft angle, unbounded (counts on over many turns)", sim::display::turns},
+    {"speed", sim::PortDirection::Output, "rad/s", "shaft speed", sim::display::rpm},
 }};
 
 const ComponentType kType{

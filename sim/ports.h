@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "sim/display_unit.h"
+
 namespace sim {
 
 enum class PortDirection { Input, Output };
@@ -17,6 +19,7 @@ struct Port {
   std::string unit;        ///< SI unit, e.g. "A", "m", "rad", "Pa", "1" for normalised
   double* value;           ///< owned by the component; stable for the component's lifetime
   std::string description;
+  DisplayUnit display{};   ///< how an engineer reads it (bar, mm, rpm, ...); chosen by the port's owner
 };
 
 using PortList = std::vector<Port>;

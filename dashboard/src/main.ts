@@ -266,10 +266,10 @@ async function main(): Promise<void> {
       }
       void refreshFaults();
     },
-    setInput: async (node, name, value) => {
+    setInput: async (node, name, value, shown) => {
       try {
         await api.setInput(node, name, value);
-        message(`${node}.${name} = ${value}`, true);
+        message(`${node}.${name} = ${shown}`, true);
       } catch (err) {
         message(errorText(err));
       }

@@ -3,7 +3,6 @@
 // few fetches write it; views subscribe to the topics they draw and never fetch on their own.
 import { TransitionHistory } from './transitions';
 import type { ClockState, NodeInfo, NodeMachines, Scenario, SignalInfo, Transition } from './types';
-import { signalInfo } from './units';
 
 export type Topic = 'nodes' | 'selected' | 'transitions' | 'machines' | 'clock';
 
@@ -20,7 +19,7 @@ export class Store {
   clock: ClockState;
 
   constructor(readonly scenario: Scenario, clock: ClockState) {
-    this.signals = new Map(scenario.signals.map((s) => { const i = signalInfo(s); return [i.name, i]; }));
+    this.signals = new Map(scenario.signals.map((s) => [s.name, s]));
     this.selected = scenario.nodes.find((n) => n.profile === 'dsp408')?.name ?? scenario.nodes[0]?.name ?? null;
     this.clock = clock;
   }

@@ -38,14 +38,22 @@ export interface ScenarioNode {
   profile: 'dsp408' | 'vtvpcd' | 'cia406' | 'generic';
 }
 
+export interface ScenarioNode {
+  name: string;
+  product: string;
+  variant: string;
+  node_id: number;
+  bus: string;
+  profile: 'dsp408' | 'vtvpcd' | 'cia406' | 'generic';
+}
+
 export interface Scenario {
   name: string;
   description: string;
   clock: { mode: 'virtual' | 'realtime'; tick_us: number };
   buses: { name: string; wire: string; bitrate: number }[];
   nodes: ScenarioNode[];
-  /** Plain names before the units work; objects with SI and display units after it (units.ts reads both). */
-  signals: (string | SignalInfo)[];
+  signals: SignalInfo[];
   faults: {
     device: { node: string; name: string; description: string }[];
     wire: string[];
@@ -53,7 +61,7 @@ export interface Scenario {
     power: string[];
     plant: string[];
   };
-  inputs: { node: string; name: string; unit?: string }[];
+  inputs: ({ node: string } & SignalInfo)[];
 }
 
 export interface OdEntry {

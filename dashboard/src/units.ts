@@ -3,10 +3,14 @@
 // multiplies. Also the numbers on plot axes: fixed decimals from the tick step, never e-notation.
 import type { SignalInfo } from './types';
 
-/** A signal as the server lists it: an object with units, or (before units existed) its bare name. */
-export function signalInfo(s: string | SignalInfo): SignalInfo {
-  if (typeof s !== 'string') return s;
-  return { name: s, unit: '', display_unit: '', display_scale: 1, display_offset: 0 };
+/** A signal the scenario does not list (no units known): shown as it comes. */
+export function signalInfo(name: string): SignalInfo {
+  return { name, unit: '', display_unit: '', display_scale: 1, display_offset: 0 };
+}
+
+/** A value typed in display units, back in SI for the server. */
+export function fromDisplay(display: number, s: SignalInfo): number {
+  return (display - s.display_offset) / s.display_scale;
 }
 
 export function toDisplay(si: number, s: SignalInfo): number {

@@ -305,14 +305,14 @@ void Dsv::process(sim::Time now, sim::Duration dt) {
 
 sim::PortList Dsv::ports() {
   return {
-      {"solenoid_a_current", sim::PortDirection::Output, "A", &solenoid_a_, "solenoid A current"},
-      {"solenoid_b_current", sim::PortDirection::Output, "A", &solenoid_b_, "solenoid B current"},
+      {"solenoid_a_current", sim::PortDirection::Output, "A", &solenoid_a_, "solenoid A current", sim::display::mA},
+      {"solenoid_b_current", sim::PortDirection::Output, "A", &solenoid_b_, "solenoid B current", sim::display::mA},
       {"actual_value", sim::PortDirection::Input, "SI", &actual_value_,
-       "measurand of the actual-value sensor; [sensor_min, sensor_max] spans the signal range of 2200h"},
-      {"actual_cable_break", sim::PortDirection::Input, "1", &actual_cable_break_, "sensor wire broken (>= 0.5)"},
-      {"enable_input", sim::PortDirection::Input, "1", &enable_input_, "hardware enable input (>= 0.5 = on)"},
-      {"supply_voltage", sim::PortDirection::Input, "V", &supply_voltage_, "supply voltage"},
-      {"temperature", sim::PortDirection::Output, "degC", &temperature_, "device temperature (0x2002)"},
+       "measurand of the actual-value sensor; [sensor_min, sensor_max] spans the signal range of 2200h", sim::display::as_si},
+      {"actual_cable_break", sim::PortDirection::Input, "1", &actual_cable_break_, "sensor wire broken (>= 0.5)", sim::display::on_off},
+      {"enable_input", sim::PortDirection::Input, "1", &enable_input_, "hardware enable input (>= 0.5 = on)", sim::display::on_off},
+      {"supply_voltage", sim::PortDirection::Input, "V", &supply_voltage_, "supply voltage", sim::display::volt},
+      {"temperature", sim::PortDirection::Output, "degC", &temperature_, "device temperature (0x2002)", sim::display::degree_celsius},
   };
 }
 

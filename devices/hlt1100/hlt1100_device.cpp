@@ -82,9 +82,9 @@ sim::PortList Device::ports() {
   auto& in = app_->inputs();
   return {
       {"position", sim::PortDirection::Input, "m", &in.position,
-       "magnet position from the start of the measuring range (sensor head end)"},
-      {"position2", sim::PortDirection::Input, "m", &in.position2, "second magnet (counts with magnet_count = 2)"},
-      {"magnet_count", sim::PortDirection::Input, "1", &in.magnet_count, "magnets on the rod: 0, 1 or 2"},
+       "magnet position from the start of the measuring range (sensor head end)", sim::display::mm},
+      {"position2", sim::PortDirection::Input, "m", &in.position2, "second magnet (counts with magnet_count = 2)", sim::display::mm},
+      {"magnet_count", sim::PortDirection::Input, "1", &in.magnet_count, "magnets on the rod: 0, 1 or 2", sim::display::as_si},
   };
 }
 

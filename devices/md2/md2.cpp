@@ -133,18 +133,18 @@ sim::PortList Md2::ports() {
   sim::PortList p;
   for (auto& ch : channels_) {
     const std::string c = "ch" + std::to_string(ch->number()) + ".";
-    p.push_back({c + "solenoid_a_current", sim::PortDirection::Output, "A", &ch->solenoid_a, "solenoid A (driver 1) current"});
-    p.push_back({c + "solenoid_b_current", sim::PortDirection::Output, "A", &ch->solenoid_b, "solenoid B (driver 2) current"});
+    p.push_back({c + "solenoid_a_current", sim::PortDirection::Output, "A", &ch->solenoid_a, "solenoid A (driver 1) current", sim::display::mA});
+    p.push_back({c + "solenoid_b_current", sim::PortDirection::Output, "A", &ch->solenoid_b, "solenoid B (driver 2) current", sim::display::mA});
     p.push_back({c + "local_command", sim::PortDirection::Input, "1", &ch->local_command,
-                 "local set point (device mode 2), fraction of full scale"});
+                 "local set point (device mode 2), fraction of full scale", sim::display::percent});
     if (options_.variant == Variant::Controller && ch->number() <= 4) {
       p.push_back({c + "actual_value", sim::PortDirection::Input, "SI", &ch->actual_value,
-                   "local feedback (actual value mode 2): Pa in modes 4/-5, else the unit's SI quantity"});
+                   "local feedback (actual value mode 2): Pa in modes 4/-5, else the unit's SI quantity", sim::display::as_si});
     }
   }
-  p.push_back({"enable_input", sim::PortDirection::Input, "1", &enable_input_, "hardware enable input (>= 0.5 = on)"});
-  p.push_back({"supply_voltage", sim::PortDirection::Input, "V", &supply_voltage_, "supply voltage"});
-  p.push_back({"temperature", sim::PortDirection::Output, "degC", &temperature_, "device temperature (0x2002)"});
+  p.push_back({"enable_input", sim::PortDirection::Input, "1", &enable_input_, "hardware enable input (>= 0.5 = on)", sim::display::on_off});
+  p.push_back({"supply_voltage", sim::PortDirection::Input, "V", &supply_voltage_, "supply voltage", sim::display::volt});
+  p.push_back({"temperature", sim::PortDirection::Output, "degC", &temperature_, "device temperature (0x2002)", sim::display::degree_celsius});
   return p;
 }
 

@@ -118,30 +118,30 @@ sim::PortList VtvpcdDevice::ports() {
   using sim::PortDirection;
   sim::PortList p{
       {"pilot_command", PortDirection::Output, "1", &pilot_command_,
-       "pilot valve (HS4/EO4) command, -1..1 = valve CMD -100..100 %; the spring offset position while de-energised"},
-      {"swivel_angle", PortDirection::Input, "1", &swivel_angle_, "swivel angle from the pump LVDT, -1..1 = -100..100 %"},
-      {"pressure_a", PortDirection::Input, "Pa", &pressure_a_, "pressure transducer A"},
-      {"pressure_b", PortDirection::Input, "Pa", &pressure_b_, "pressure transducer B (A4VSO: pump pressure)"},
+       "pilot valve (HS4/EO4) command, -1..1 = valve CMD -100..100 %; the spring offset position while de-energised", sim::display::percent},
+      {"swivel_angle", PortDirection::Input, "1", &swivel_angle_, "swivel angle from the pump LVDT, -1..1 = -100..100 %", sim::display::percent},
+      {"pressure_a", PortDirection::Input, "Pa", &pressure_a_, "pressure transducer A", sim::display::bar},
+      {"pressure_b", PortDirection::Input, "Pa", &pressure_b_, "pressure transducer B (A4VSO: pump pressure)", sim::display::bar},
       {"pilot_spool_position", PortDirection::Input, "1", &pilot_spool_position_,
-       "pilot valve spool position, -1..1 (act. valve 0x2F19)"},
-      {"di1", PortDirection::Input, "1", &di_[0], "discrete input DI1 (binary 1), 0/1"},
-      {"di2", PortDirection::Input, "1", &di_[1], "discrete input DI2 (binary 2), 0/1"},
-      {"di3", PortDirection::Input, "1", &di_[2], "discrete input DI3 (binary 4), 0/1"},
-      {"di4", PortDirection::Input, "1", &di_[3], "discrete input DI4 (binary 8), 0/1"},
-      {"di5", PortDirection::Input, "1", &di_[4], "discrete input DI5 (Master), 0/1"},
-      {"di6", PortDirection::Input, "1", &di_[5], "discrete input DI6 (binary enable), 0/1"},
-      {"enable", PortDirection::Input, "1", &enable_, "controller enable input, 0/1"},
-      {"angle_cmd_b14_b16", PortDirection::Input, "1", &analog_angle_b14_b16_, "analog angle command, -1..1"},
+       "pilot valve spool position, -1..1 (act. valve 0x2F19)", sim::display::percent},
+      {"di1", PortDirection::Input, "1", &di_[0], "discrete input DI1 (binary 1), 0/1", sim::display::on_off},
+      {"di2", PortDirection::Input, "1", &di_[1], "discrete input DI2 (binary 2), 0/1", sim::display::on_off},
+      {"di3", PortDirection::Input, "1", &di_[2], "discrete input DI3 (binary 4), 0/1", sim::display::on_off},
+      {"di4", PortDirection::Input, "1", &di_[3], "discrete input DI4 (binary 8), 0/1", sim::display::on_off},
+      {"di5", PortDirection::Input, "1", &di_[4], "discrete input DI5 (Master), 0/1", sim::display::on_off},
+      {"di6", PortDirection::Input, "1", &di_[5], "discrete input DI6 (binary enable), 0/1", sim::display::on_off},
+      {"enable", PortDirection::Input, "1", &enable_, "controller enable input, 0/1", sim::display::on_off},
+      {"angle_cmd_b14_b16", PortDirection::Input, "1", &analog_angle_b14_b16_, "analog angle command, -1..1", sim::display::percent},
       {"angle_cmd_b2_b4", PortDirection::Input, "1", &analog_angle_b2_b4_,
-       "analog resulting-angle command (slave), -1..1"},
-      {"pressure_cmd_b18_b20", PortDirection::Input, "Pa", &analog_pressure_b18_b20_, "analog pressure command"},
-      {"power_cmd_f8_f10", PortDirection::Input, "1", &analog_power_f8_f10_, "analog power command, 0..1"},
+       "analog resulting-angle command (slave), -1..1", sim::display::percent},
+      {"pressure_cmd_b18_b20", PortDirection::Input, "Pa", &analog_pressure_b18_b20_, "analog pressure command", sim::display::bar},
+      {"power_cmd_f8_f10", PortDirection::Input, "1", &analog_power_f8_f10_, "analog power command, 0..1", sim::display::percent},
   };
   if (builtin_) {
     p.push_back({"builtin_load_coefficient", PortDirection::Input, "L/min/sqrt(bar)", &builtin_->load_coefficient(),
-                 "built-in plant: throttle load K_L (0 = dead-headed)"});
+                 "built-in plant: throttle load K_L (0 = dead-headed)", sim::display::as_si});
     p.push_back({"builtin_speed", PortDirection::Input, "1/min", &builtin_->speed_rpm(),
-                 "built-in plant: shaft speed (0 = standing: spring centring)"});
+                 "built-in plant: shaft speed (0 = standing: spring centring)", sim::display::as_si});
   }
   return p;
 }

@@ -84,12 +84,14 @@ std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std:
 
 sim::PortList Device::ports() {
   auto& shaft = app_->measurement().shaft();
+  // A multiturn encoder counts turns; a singleturn one reads an angle within one turn.
+  const sim::DisplayUnit angle_display = settings_->multiturn ? sim::display::turns : sim::display::degree;
   return {
       {"angle", sim::PortDirection::Input, "rad", &shaft.angle,
-       "shaft angle, continuous and unbounded, clockwise positive looking at the shaft"},
+       "shaft angle, continuous and unbounded, clockwise positive looking at the shaft", angle_display},
       {"speed", sim::PortDirection::Input, "rad/s", &shaft.speed,
-       "shaft speed (derivative of angle): advances the shaft between updates of angle"},
-      {"temperature", sim::PortDirection::Input, "degC", &app_->temperature().input, "device temperature"},
+       "shaft speed (derivative of angle): advances the shaft between updates of angle", sim::display::rpm},
+      {"temperature", sim::PortDirection::Input, "degC", &app_->temperature().input, "device temperature", sim::display::degree_celsius},
   };
 }
 

@@ -53,7 +53,28 @@ TEST_F(ControlApi, ScenarioListsBusesNodesSignalsFaultsAndInputs) {
   EXPECT_EQ(profiles["vtvpcd"], "vtvpcd");
   EXPECT_EQ(profiles["hlt"], "cia406");
   EXPECT_EQ(profiles["wdga"], "cia406");
-  EXPECT_NE(std::find(s["signals"].begin(), s["signals"].end(), "cyl.position"), s["signals"].end());
+  // Signals carry their SI unit and the display unit their owner (the plant model, the device) chose.
+  std::map<std::string, nlohmann::json> signals;
+  for (const auto& sig : s["signals"]) signals[sig["name"]] = sig;
+  ASSERT_TRUE(signals.count("cyl.position"));
+  EXPECT_EQ(signals["cyl.position"]["unit"], "m");
+  EXPECT_EQ(signals["cyl.position"]["display_unit"], "mm");
+  EXPECT_DOUBLE_EQ(signals["cyl.position"]["display_scale"].get<double>(), 1000.0);
+  EXPECT_DOUBLE_EQ(signals["cyl.position"]["display_offset"].get<double>(), 0.0);
+  for (const auto& [name, sig] : signals) {
+    EXPECT_FALSE(sig["unit"].get<std::string>().empty()) << name;
+    EXPECT_FALSE(sig["display_unit"].get<std::string>().empty()) << name;
+    EXPECT_NE(sig["display_scale"].get<double>(), 0.0) << name;
+    const std::map<std::string, std::string> expected{{"Pa", "bar"}, {"rad/s", "rpm"}, {"m^3/s", "l/min"}, {"m/s", "mm/s"}};
+    const auto it = expected.find(sig["unit"].get<std::string>());
+    if (it != expected.end()) {
+      EXPECT_EQ(sig["display_unit"], it->second) << name;
+    }
+  }
+  ASSERT_TRUE(signals.count("pump.pressure_b"));
+  EXPECT_DOUBLE_EQ(signals["pump.pressure_b"]["display_scale"].get<double>(), 1e-5);
+  ASSERT_TRUE(signals.count("dsv.solenoid_a_current"));
+  EXPECT_EQ(signals["dsv.solenoid_a_current"]["display_unit"], "mA");
   bool magnet_lost = false;
   for (const auto& f : s["faults"]["device"]) magnet_lost |= f["node"] == "hlt" && f["name"] == "magnet_lost";
   EXPECT_TRUE(magnet_lost);
@@ -326,6 +347,10 @@ TEST_F(ControlApi, InputsAndSignals) {
   const auto v = get("/api/signals?names=cyl.position,pump.swivel_angle");
   EXPECT_TRUE(v["values"]["cyl.position"].is_number());
   EXPECT_TRUE(v["values"]["pump.swivel_angle"].is_number());
+  ASSERT_EQ(v["signals"].size(), 2u);  // values stay SI; the metadata says how to show them
+  EXPECT_EQ(v["signals"][1]["name"], "pump.swivel_angle");
+  EXPECT_EQ(v["signals"][1]["unit"], "1");
+  EXPECT_EQ(v["signals"][1]["display_unit"], "%");
   EXPECT_EQ(v["t_us"], get("/api/clock")["t_us"]);
   EXPECT_EQ(status(p().http().Get("/api/signals?names=cyl.warp")), 400);
   EXPECT_EQ(status(p().http().Get("/api/events?signals=cyl.warp")), 400);

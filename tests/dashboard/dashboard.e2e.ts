@@ -197,7 +197,7 @@ test('an SDO write the node refuses shows the abort code and its text', async ()
   await byTestId('od-filter').fill('');
 });
 
-test('the cylinder plot rises when the pump delivers and the DSV opens', async () => {
+test('the cylinder plot rises when the pump delivers and the DSV opens; plots and node table read in bar and mm', async () => {
   const position = () => page.evaluate(() => {
     const el = document.querySelector('[data-testid="plot-value-cyl.position"]');
     const m = (el?.textContent ?? '').match(/= (-?[\d.e+-]+)/);
@@ -219,9 +219,14 @@ test('the cylinder plot rises when the pump delivers and the DSV opens', async (
   await page.waitForFunction(() => /6300:01.*done/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
   await page.waitForFunction((s) => {
     const m = (document.querySelector('[data-testid="plot-value-cyl.position"]')?.textContent ?? '').match(/= (-?[\d.e+-]+)/);
-    return m !== null && Number(m[1]) > s + 0.05;
+    return m !== null && Number(m[1]) > s + 50;  // mm
   }, start, { timeout: 30_000 });
   await byTestId('od-filter').fill('');
+  // Display units: the plots and the node table in bar and mm, never raw SI or e-notation.
+  assert.match((await byTestId('plot-value-cyl.position').textContent()) ?? '', /^= -?\d+(\.\d+)? mm$/);
+  assert.match((await byTestId('plot-value-p_supply.pressure').textContent()) ?? '', /^= -?\d+(\.\d+)? bar$/);
+  await page.waitForFunction(() => /position -?\d+(\.\d+)? mm/.test(document.querySelector('[data-testid=values-hlt]')?.textContent ?? ''));
+  await page.waitForFunction(() => /pressure_a -?\d+(\.\d+)? bar/.test(document.querySelector('[data-testid=values-vtvpcd]')?.textContent ?? ''));
   await shot('cylinder-rising', 'plots-section');
 });
 

@@ -1,6 +1,6 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { decimalsFor, formatReading, formatSignal, signalInfo, tickLabels, toDisplay, unitLabel } from '../../dashboard/src/units';
+import { decimalsFor, formatReading, formatSignal, fromDisplay, signalInfo, tickLabels, toDisplay, unitLabel } from '../../dashboard/src/units';
 import type { SignalInfo } from '../../dashboard/src/types';
 
 const pressure: SignalInfo = { name: 'p_supply.pressure', unit: 'Pa', display_unit: 'bar', display_scale: 1e-5, display_offset: 0 };
@@ -10,9 +10,11 @@ test('a signal in its display unit: 2.549e7 Pa reads 254.9 bar, 0.1234 m reads 1
   assert.equal(formatSignal(2.549e7, pressure), '254.9 bar');
   assert.equal(formatSignal(0.1234, position), '123.4 mm');
   assert.equal(toDisplay(1, { ...position, display_scale: 1, display_offset: -273.15 }), 1 - 273.15);
+  assert.ok(Math.abs(fromDisplay(254.9, pressure) - 2.549e7) < 1e-3);
+  assert.equal(fromDisplay(toDisplay(0.25, position), position), 0.25);
 });
 
-test('a bare name (a server without units) reads in SI without a unit; "1" is no unit', () => {
+test('a name the scenario does not list reads as it comes; "1" is no unit', () => {
   assert.deepEqual(signalInfo('cyl.position'), { name: 'cyl.position', unit: '', display_unit: '', display_scale: 1, display_offset: 0 });
   assert.equal(formatSignal(0.5, signalInfo('x')), '0.5');
   assert.equal(unitLabel({ ...pressure, display_unit: '', unit: '1' }), '');

@@ -6,7 +6,7 @@ import type { NodeInfo, ScenarioNode, SignalInfo } from '../types';
 import { formatSignal } from '../units';
 
 /** A node's process values worth a column: its measuring or commanding ports, at most two. */
-const PRIMARY_PORTS = ['position', 'angle', 'speed', 'swivel_angle', 'pressure_a', 'actual_value', 'ch1.local_command'];
+const PRIMARY_PORTS = ['position', 'angle', 'speed', 'swivel_angle', 'pressure_a', 'solenoid_a_current', 'ch1.solenoid_a_current'];
 
 export function processSignals(node: string, signals: ReadonlyMap<string, SignalInfo>): SignalInfo[] {
   return PRIMARY_PORTS.map((p) => signals.get(`${node}.${p}`)).filter((s): s is SignalInfo => s !== undefined).slice(0, 2);
@@ -66,7 +66,7 @@ export class NodeTable {
       const text = (this.readings.get(name) ?? []).map((s) => {
         const v = latest(s.name);
         return v === undefined || Number.isNaN(v) ? '' : `${s.name.slice(name.length + 1)} ${formatSignal(v, s)}`;
-      }).filter(Boolean).join(', ');
+      }).filter(Boolean).join('\n');
       if (c.values.textContent !== text) c.values.textContent = text;
     }
   }
