@@ -38,15 +38,6 @@ export interface ScenarioNode {
   profile: 'dsp408' | 'vtvpcd' | 'cia406' | 'generic';
 }
 
-export interface ScenarioNode {
-  name: string;
-  product: string;
-  variant: string;
-  node_id: number;
-  bus: string;
-  profile: 'dsp408' | 'vtvpcd' | 'cia406' | 'generic';
-}
-
 export interface Scenario {
   name: string;
   description: string;
