@@ -36,9 +36,9 @@ export function renderMachine(m: Machine, current: string, chain: readonly Trans
     style: `max-width:${width * 1.15}px`,
   });
   root.append(svg('defs', {},
-    svg('marker', { id: `arrow-${id}`, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 7, markerHeight: 7, orient: 'auto-start-reverse' },
+    svg('marker', { id: `arrow-${id}`, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 8, markerHeight: 8, markerUnits: 'userSpaceOnUse', orient: 'auto-start-reverse' },
       svg('path', { d: 'M 0 0 L 10 5 L 0 10 z', class: 'arrowhead' })),
-    svg('marker', { id: `arrow-last-${id}`, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 6, markerHeight: 6, orient: 'auto-start-reverse' },
+    svg('marker', { id: `arrow-last-${id}`, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 11, markerHeight: 11, markerUnits: 'userSpaceOnUse', orient: 'auto-start-reverse' },
       svg('path', { d: 'M 0 0 L 10 5 L 0 10 z', class: 'arrowhead last' }))));
   // Several edges between one pair of states fan out: the n-th bends further.
   const seenPairs = new Map<string, number>();
@@ -50,7 +50,9 @@ export function renderMachine(m: Machine, current: string, chain: readonly Trans
     const nth = seenPairs.get(pair) ?? 0;
     seenPairs.set(pair, nth + 1);
     const len = Math.hypot(b.x - a.x, b.y - a.y);
-    const bend = Math.min(70, 14 + len * 0.1) + nth * 18;
+    // An edge that skips states on its row or column swings wide around them.
+    const skips = (a.s.col === b.s.col && Math.abs(a.s.row - b.s.row) > 1) || (a.s.row === b.s.row && Math.abs(a.s.col - b.s.col) > 1);
+    const bend = (skips ? Math.min(130, 40 + len * 0.25) : Math.min(70, 14 + len * 0.1)) + nth * 18;
     const nx = -(b.y - a.y) / len, ny = (b.x - a.x) / len;
     const mx = (a.x + b.x) / 2 + nx * bend, my = (a.y + b.y) / 2 + ny * bend;
     const [x1, y1] = boxExit(a.x, a.y, boxWidth(e.from), mx, my);
@@ -60,7 +62,9 @@ export function renderMachine(m: Machine, current: string, chain: readonly Trans
     const g = svg('g', { class: n === undefined ? 'edge' : 'edge last', 'data-transition': e.transition, 'data-edge': edgeId(e), 'data-step': n },
       svg('title', {}, `${e.transition} (${e.from} → ${e.to}): ${e.condition}`),
       svg('path', { d: `M ${x1} ${y1} Q ${mx} ${my} ${x2} ${y2}`, 'marker-end': `url(#${n === undefined ? 'arrow-' : 'arrow-last-'}${id})` }),
-      svg('text', { x: (x1 + 2 * mx + x2) / 4, y: (y1 + 2 * my + y2) / 4 + 3, class: 'edge-label', 'text-anchor': 'middle' }, label));
+      // the label beside the curve's middle, on the outer side of its bend
+      svg('text', { x: (x1 + 2 * mx + x2) / 4 + nx * 4, y: (y1 + 2 * my + y2) / 4 + ny * 4 + 4, class: 'edge-label',
+        'text-anchor': Math.abs(nx) > 0.5 ? (nx > 0 ? 'start' : 'end') : 'middle' }, label));
     (n === undefined ? edges : marked).append(g);
   }
   root.append(edges, marked);  // the marked steps over the others
