@@ -1,5 +1,6 @@
 #include "control/sim_bridge.h"
 
+#include <algorithm>
 #include <thread>
 
 #include "devices/canopen/emergency.h"
@@ -107,6 +108,8 @@ void SimBridge::attach(const scenario::RunContext& context) {
     bus.add_tap(taps_.back().get());
   }
   masters_.resize(world.buses().size());
+  sync_.assign(world.buses().size(), {});
+  sync_on_ = false;
   sdo_jobs_.resize(world.buses().size());
   node_by_id_.assign(world.buses().size(), {});
   for (auto& t : node_by_id_) t.fill(-1);
@@ -176,7 +179,7 @@ bool SimBridge::before_tick(bool end_reached) {
     budget_ = 0;
   }
   service();
-  if (realtime_) return !sched.stop_requested();
+  if (realtime_) return tick_goes_ahead();
   while (!sched.stop_requested()) {
     if (!paused_.load()) {
       pace();
@@ -197,7 +200,14 @@ bool SimBridge::before_tick(bool end_reached) {
     wait_for_work(std::chrono::steady_clock::now() + kStopPoll);
     service();
   }
-  return !sched.stop_requested();
+  return tick_goes_ahead();
+}
+
+bool SimBridge::tick_goes_ahead() {
+  if (ctx_->scheduler.stop_requested()) return false;
+  // The control plane's SYNCs due at this tick go out with it (none while the clock stands).
+  if (sync_on_) produce_sync();
+  return true;
 }
 
 void SimBridge::service() {
@@ -507,6 +517,18 @@ bool SimBridge::send_frame(std::size_t bus, const sim::CanFrame& frame) {
   const auto refused = stats.tx_queue_overflow;
   master(bus).send(frame);
   return stats.tx_queue_overflow == refused;
+}
+
+void SimBridge::set_sync(std::size_t bus, sim::Duration period, std::uint8_t counter_overflow) {
+  master(bus);  // its endpoint exists before the first SYNC (nothing allocates in produce_sync)
+  sync_[bus].start(period, counter_overflow, ctx_->scheduler.now());
+  sync_on_ = std::any_of(sync_.begin(), sync_.end(), [](const scenario::SyncProducer& p) { return p.period.count() > 0; });
+}
+
+void SimBridge::produce_sync() {
+  const auto now = ctx_->scheduler.now();
+  for (std::size_t b = 0; b < sync_.size(); ++b)
+    if (const auto f = sync_[b].due(now)) masters_[b]->send(*f);
 }
 
 void SimBridge::add_listener() {

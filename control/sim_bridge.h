@@ -29,6 +29,7 @@
 #include "control/spsc_ring.h"
 #include "engine/run_extension.h"
 #include "engine/sdo_client.h"
+#include "engine/sync_producer.h"
 #include "sim/bus.h"
 #include "sim/display_unit.h"
 
@@ -151,6 +152,11 @@ class SimBridge final : public scenario::RunExtension {
   /// false when the bus refused it (its transmit queue for this endpoint is full).
   bool send_frame(std::size_t bus, const sim::CanFrame& frame);
 
+  /// The control plane's SYNC producer on bus `bus` (POST /api/sync), run before every tick while
+  /// one is on; period 0 stops it (scheduler thread: commands). Independent of the script's.
+  void set_sync(std::size_t bus, sim::Duration period, std::uint8_t counter_overflow);
+  const scenario::SyncProducer& sync(std::size_t bus) const { return sync_[bus]; }
+
   /// Fault ids: live faults applied by the dashboard (scheduler thread only).
   struct LiveFault {
     int id = 0;
@@ -240,6 +246,11 @@ class SimBridge final : public scenario::RunExtension {
 
   std::vector<LiveFault> live_faults_;
   int fault_ids_ = 0;
+
+  std::vector<scenario::SyncProducer> sync_;  ///< per bus
+  bool sync_on_ = false;                      ///< any of them has a period
+  void produce_sync();
+  bool tick_goes_ahead();  ///< before_tick's answer when the tick runs (unless stopping)
 };
 
 }  // namespace control
