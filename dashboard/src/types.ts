@@ -109,9 +109,11 @@ export interface PdoEntry { object: string; name: string; bits: number; raw: str
 export interface Pdo {
   kind: 'rpdo' | 'tpdo';
   number: number;
-  cob_id: number | string;
+  cob_id: number;
+  extended?: boolean;
   valid: boolean;
-  transmission_type: number;
+  /** null when the node has no transmission type entry for this PDO. */
+  transmission_type: number | null;
   entries: PdoEntry[];
 }
 

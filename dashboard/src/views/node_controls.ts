@@ -46,8 +46,8 @@ export function mappingText(e: { object: string; name: string; bits: number; raw
   return `${e.raw} → ${e.object} ${e.name}, ${e.bits} bit`;
 }
 
-function cobId(c: number | string): string {
-  return typeof c === 'number' ? `0x${hex(c, 3)}` : c;
+function cobId(p: Pdo): string {
+  return `${hex(p.cob_id, p.extended ? 8 : 3)}h`;
 }
 
 /** The PDO panel: every PDO of the node decoded, and a sender for each valid RPDO. */
@@ -57,7 +57,8 @@ export class PdoPanel {
   show(node: string, pdos: readonly Pdo[]): void {
     const rows: Node[] = [];
     for (const p of pdos) {
-      const title = `${p.kind.toUpperCase()}${p.number}  COB-ID ${cobId(p.cob_id)}${p.valid ? '' : ' (not valid)'}, transmission type ${p.transmission_type}`;
+      const title = `${p.kind.toUpperCase()}${p.number}  COB-ID ${cobId(p)}${p.valid ? '' : ' (not valid)'}` +
+        (p.transmission_type === null ? '' : `, transmission type ${p.transmission_type}`);
       const inputs = new Map<string, HTMLInputElement>();
       const entries = el('ul', { class: 'pdo-entries' }, ...p.entries.map((e) => {
         const li = el('li', { class: 'mono' }, mappingText(e));
