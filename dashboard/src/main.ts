@@ -127,7 +127,6 @@ async function main(): Promise<void> {
   }
 
   const pdoPanel = new PdoPanel($('pdos'), {
-    writeControlWord: () => undefined,
     sendRpdo: (node, pdo, values) => void sendRpdo(node, pdo, values),
     reportError: (m) => message(m),
   });

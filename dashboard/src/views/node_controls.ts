@@ -52,7 +52,7 @@ function cobId(p: Pdo): string {
 
 /** The PDO panel: every PDO of the node decoded, and a sender for each valid RPDO. */
 export class PdoPanel {
-  constructor(private host: HTMLElement, private actions: NodeControlActions) {}
+  constructor(private host: HTMLElement, private actions: Pick<NodeControlActions, 'sendRpdo' | 'reportError'>) {}
 
   show(node: string, pdos: readonly Pdo[]): void {
     const rows: Node[] = [];
