@@ -13,6 +13,7 @@
 #include "control/http_server.h"
 #include "control/json_views.h"
 #include "control/pdo_view.h"
+#include "control/machine_views.h"
 #include "control/server_thread_priority.h"
 #include "devices/canopen/nmt_command.h"
 #include "devices/canopen/sdo_abort.h"
@@ -389,6 +390,31 @@ struct ControlPlane::Server {
       const auto i = node(req.matches[1]);
       need_run();
       reply(res, 200, node_json_now(i));
+    }));
+    router.add("GET", R"(/api/nodes/([^/]+)/transitions)", guarded([this](const http::Request& req, http::Response& res) {
+      const auto i = node(req.matches[1]);
+      std::uint64_t after = 0;
+      if (req.has_param("after")) {
+        const auto text = req.param("after");
+        char* end = nullptr;
+        errno = 0;
+        after = std::strtoull(text.c_str(), &end, 10);
+        if (text.empty() || *end != '\0' || errno != 0 || text[0] == '-') throw HttpError{400, "'after' is not a sequence number"};
+      }
+      const auto entries = call<std::vector<devices::Transition>>([i, after](const scenario::RunContext& c) {
+        return transitions_after(c.world.nodes()[i].device->transition_log(), after);
+      });
+      json a = json::array();
+      for (const auto& t : entries) a.push_back(transition_json(t));
+      reply(res, 200, a);
+    }));
+    router.add("GET", R"(/api/nodes/([^/]+)/machines)", guarded([this](const http::Request& req, http::Response& res) {
+      const auto i = node(req.matches[1]);
+      auto m = call<std::pair<bool, std::vector<devices::MachineView>>>([i](const scenario::RunContext& c) {
+        auto& dev = *c.world.nodes()[i].device;
+        return std::make_pair(dev.node().powered(), dev.machines());
+      });
+      reply(res, 200, machines_json(node_names[i], m.first, m.second));
     }));
     router.add("GET", R"(/api/nodes/([^/]+)/od)", guarded([this](const http::Request& req, http::Response& res) { od(req, res); }));
     router.add("POST", R"(/api/nodes/([^/]+)/sdo)", guarded([this](const http::Request& req, http::Response& res) { sdo_write(req, res); }));

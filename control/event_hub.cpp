@@ -1,6 +1,7 @@
 #include "control/event_hub.h"
 
 #include "control/json_views.h"
+#include "control/machine_views.h"
 #include "control/server_thread_priority.h"
 
 namespace control {
@@ -126,6 +127,9 @@ void EventHub::batch() {
     }
     while (bridge_.signal_rows().pop(row_)) {
     }
+    NodeTransition t;
+    while (bridge_.transitions().pop(t)) {
+    }
     dropped_seen_ = bridge_.frames_dropped();
     return;
   }
@@ -186,6 +190,15 @@ void EventHub::batch() {
       nlohmann::json{{"t_us", clock.t_us}, {"paused", clock.paused}, {"speed", clock.speed}, {"end_reached", clock.end_reached}}
           .dump();
 
+  // State machine transitions: one event each, {"node", ...the entry} (docs/api.md).
+  std::string transitions;
+  NodeTransition nt;
+  while (bridge_.transitions().pop(nt)) {
+    auto j = transition_json(nt.transition);
+    j["node"] = nt.node < topo_.node_names.size() ? topo_.node_names[nt.node] : std::string();
+    append_event(transitions, "transition", j.dump());
+  }
+
   const auto& names = bridge_.signals();
   for (std::size_t i = 0; i < clients.size(); ++i) {
     auto& c = *clients[i];
@@ -205,6 +218,7 @@ void EventHub::batch() {
       else append_event(out, "frames", frames);
     }
     if (lost > 0) append_event(out, "dropped", nlohmann::json{{"frames", lost}}.dump());
+    if (!transitions.empty() && c.outbox_.size() + transitions.size() <= kMaxBacklog) out += transitions;
     c.dropped_ += lost;
     if (out.empty()) continue;
     c.outbox_ += out;

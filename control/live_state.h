@@ -7,9 +7,16 @@
 #include <string_view>
 
 #include "devices/profile_status.h"
+#include "devices/transition_log.h"
 #include "sim/can_frame.h"
 
 namespace control {
+
+/// A state machine's transition as the stream carries it (its texts are static).
+struct NodeTransition {
+  std::uint32_t node = 0;  ///< scenario order
+  devices::Transition transition;
+};
 
 struct EmcyRecord {
   std::int64_t t_us = 0;

@@ -116,6 +116,7 @@ void SimBridge::attach(const scenario::RunContext& context) {
 
   const auto n = world.nodes().size();
   work_.resize(n);
+  transition_seen_.assign(n, 0);
   pdo_work_.assign(n, std::vector<PdoMap>(2 * kMaxPdos));
   for (const auto& node : world.nodes())
     for (const auto& p : node.ports) signals_.push_back({node.spec->name + "." + p.name, p.unit, p.value, p.display});
@@ -400,7 +401,29 @@ void SimBridge::record_emcy(std::size_t bus, const sim::CanFrame& f, sim::Time n
   ++st.emcy_count;
 }
 
+void SimBridge::capture_transitions() {
+  auto& nodes = ctx_->world.nodes();
+  bool any = false;
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const auto& log = nodes[i].device->transition_log();
+    if (log.last_seq() == transition_seen_[i]) continue;
+    if (capturing_) {
+      log.for_each_after(transition_seen_[i], [&](const devices::Transition& t) {
+        if (auto* slot = transitions_.claim()) {
+          slot->node = static_cast<std::uint32_t>(i);
+          slot->transition = t;
+          transitions_.commit();
+        }
+      });
+      any = true;  // publish also learns what the hub took (a full ring frees up)
+    }
+    transition_seen_[i] = log.last_seq();
+  }
+  if (any) transitions_.publish();
+}
+
 void SimBridge::publish_nodes(std::int64_t now, bool wait) {
+  capture_transitions();
   auto& nodes = ctx_->world.nodes();
   bool ids_changed = false;
   for (std::size_t i = 0; i < nodes.size(); ++i) {

@@ -144,6 +144,9 @@ class SimBridge final : public scenario::RunExtension {
   /// e.g. at full virtual speed): a running total.
   std::uint64_t frames_dropped() const { return frames_dropped_.load(std::memory_order_relaxed); }
   SpscRing<SignalRow>& signal_rows() { return *signal_rows_; }
+  /// The devices' new transitions, taken with each node snapshot while a stream listens (a full
+  /// ring drops them: GET /api/nodes/{n}/transitions still has them).
+  SpscRing<NodeTransition>& transitions() { return transitions_; }
   /// Fixed at attach.
   const std::vector<SignalInfo>& signals() const { return signals_; }
   std::int64_t signal_period_us() const { return signal_period_us_; }
@@ -176,6 +179,7 @@ class SimBridge final : public scenario::RunExtension {
   void service();
   bool drain_commands();
   void publish_nodes(std::int64_t now_us, bool wait);
+  void capture_transitions();
   void publish_capture();
   BusMaster& master(std::size_t bus);
   void refresh_pdo_maps();
@@ -232,6 +236,8 @@ class SimBridge final : public scenario::RunExtension {
   SpscRing<CapturedFrame> frames_{16384};
   std::uint64_t dropped_ = 0;  ///< scheduler's count, published to frames_dropped_ per tick
   std::atomic<std::uint64_t> frames_dropped_{0};
+  SpscRing<NodeTransition> transitions_{1024};
+  std::vector<std::uint64_t> transition_seen_;  ///< per node: the last seq taken
   std::vector<SignalInfo> signals_;
   std::unique_ptr<SpscRing<SignalRow>> signal_rows_;
   std::int64_t signal_period_us_ = 20000;

@@ -12,6 +12,7 @@
 
 #include "devices/canopen/node.h"
 #include "devices/profile_status.h"
+#include "devices/state_machine_diagram.h"
 #include "devices/transition_log.h"
 #include "sim/ports.h"
 
@@ -61,6 +62,10 @@ class Device {
   /// counters, non-volatile memory) override and keep it.
   virtual void power_off() { node().power_off(); }
   virtual void power_on(sim::Time now) { node().power_on(now); }
+
+  /// The device's state machines (NMT first, then its profile's: DSP 408 per channel, VT-VPCD,
+  /// CiA 406 bits), each with its state now. Read between ticks; allocates (not for the tick).
+  virtual std::vector<MachineView> machines();
 
   /// Every state change of this device's state machines (NMT, profile, product), oldest first.
   /// Read it between ticks (the scheduler's thread writes it).

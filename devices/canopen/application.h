@@ -17,6 +17,8 @@ class Application {
   /// Power-on or NMT Reset Node: the 0x2000-0x9FFF area has been reloaded (stored values or
   /// defaults); put the device model back to its power-on state.
   virtual void on_reset_application() {}
+  /// The node loses power (before it goes silent): state machines show OFF until power-on.
+  virtual void on_power_off() {}
   /// A communication reset starts (power-on, Reset Node, Reset Communication); the device may set
   /// the node-ID to use (Node::set_pending_node_id) before the 0x1000-0x1FFF area is reloaded.
   virtual void on_reset_communication() {}

@@ -73,7 +73,7 @@ void ErrorControl::process(sim::Time now) {
   const std::uint32_t life = life_time_ms();
   if (life != 0 && now - last_guard_ > sim::milliseconds(life)) {
     in_error_ = true;
-    node_.communication_error(CommError::LifeGuarding);
+    node_.communication_error(CommError::LifeGuarding, life);
   }
 }
 

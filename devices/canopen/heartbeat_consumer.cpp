@@ -76,7 +76,7 @@ void HeartbeatConsumer::process(sim::Time now) {
     if (!w.monitoring || w.timed_out) continue;
     if (now - w.last_seen > sim::milliseconds(w.time_ms)) {
       w.timed_out = true;
-      node_.communication_error(CommError::HeartbeatConsumer);
+      node_.communication_error(CommError::HeartbeatConsumer, w.producer);
     }
   }
 }

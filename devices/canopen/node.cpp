@@ -16,6 +16,20 @@ namespace canopen {
 namespace {
 constexpr std::uint16_t kErrorBehaviour = 0x1029;
 constexpr std::uint32_t kLssMasterToSlave = 0x7E5;
+
+using devices::TransitionCause;
+
+/// The transition's name in the log and the machine description (nmt_machine.cpp).
+std::string_view command_transition(NmtCommand c) {
+  switch (c) {
+    case NmtCommand::Start: return "NMT 01h";
+    case NmtCommand::Stop: return "NMT 02h";
+    case NmtCommand::EnterPreOperational: return "NMT 80h";
+    case NmtCommand::ResetNode: return "NMT 81h";
+    case NmtCommand::ResetCommunication: return "NMT 82h";
+  }
+  return "";
+}
 }  // namespace
 
 Node::Node(std::string name, ObjectDictionary od, NodePolicy policy, std::uint8_t node_id)
@@ -74,6 +88,12 @@ void Node::power_on(sim::Time now) {
   powered_ = true;
   silent_until_ = now;
   nmt_state_ = NmtState::Initialising;
+  // The first power-on is the boot; any later one a power cycle (scenario, page button).
+  boot_cause_ = ever_powered_ ? NmtCause{TransitionCause::Power, 1, "", "power on"}
+                              : NmtCause{TransitionCause::Boot, 0, "", "power on"};
+  ever_powered_ = true;
+  const CauseScope scope(*this, boot_cause_);
+  record_nmt("OFF", "INITIALISING");
   std::string error;
   if (!store_->power_on(error)) sim::log(sim::LogLevel::Error, "node {}: {}; using defaults", name_, error);
   bus_off_ = false;
@@ -91,7 +111,13 @@ void Node::power_on(sim::Time now) {
 }
 
 void Node::power_off() {
+  const bool was_powered = powered_;
   powered_ = false;
+  if (was_powered) {
+    const CauseScope scope(*this, {TransitionCause::Power, 0, "", "power off"});
+    record_nmt(to_string(nmt_state_), "OFF");
+    app().on_power_off();
+  }
   boot_pending_ = false;
   refresh_rx_gate();
   nmt_state_ = NmtState::Initialising;
@@ -125,25 +151,30 @@ void Node::send_boot_up() {
   if (node_id_ == kUnconfigured || node_id_ == 0 || node_id_ > 127) return;  // LSS only until configured
   const NmtState from = nmt_state_;
   nmt_state_ = NmtState::PreOperational;  // boot-up is sent on the transition (EMCY allowed after)
+  NmtCause boot = boot_cause_;
+  boot.transition = "boot-up";
+  const CauseScope scope(*this, boot);
+  record_nmt(to_string(from), to_string(nmt_state_));
   send(sim::CanFrame::data_frame(0x700u + node_id_, {0x00}));
   error_control_->reset_communication(now_);
   app().on_nmt_state_changed(from, nmt_state_);
 }
 
-void Node::execute_nmt(NmtCommand command) {
+void Node::execute_nmt(NmtCommand command, std::string_view sender) {
   if (!powered_ || nmt_state_ == NmtState::Initialising) return;
+  const CauseScope scope(*this, {TransitionCause::NmtCommand, static_cast<std::uint32_t>(command), sender,
+                                 command_transition(command)});
   app().on_nmt_command(command);
   switch (command) {
     case NmtCommand::Start: set_nmt_state(NmtState::Operational); break;
     case NmtCommand::Stop: set_nmt_state(NmtState::Stopped); break;
     case NmtCommand::EnterPreOperational: set_nmt_state(NmtState::PreOperational); break;
     case NmtCommand::ResetNode:
-      nmt_state_ = NmtState::Initialising;
-      reset_application();
-      reset_communication();
-      break;
     case NmtCommand::ResetCommunication:
+      record_nmt(to_string(nmt_state_), "INITIALISING");
       nmt_state_ = NmtState::Initialising;
+      boot_cause_ = cause_;  // the boot-up that follows names the reset
+      if (command == NmtCommand::ResetNode) reset_application();
       reset_communication();
       break;
   }
@@ -153,11 +184,23 @@ void Node::set_nmt_state(NmtState state) {
   if (state == nmt_state_) return;
   const NmtState from = nmt_state_;
   nmt_state_ = state;
+  record_nmt(to_string(from), to_string(state));
   if (state == NmtState::Operational) pdo_->on_enter_operational(now_);
   app().on_nmt_state_changed(from, state);
 }
 
-void Node::communication_error(CommError error) {
+void Node::record_nmt(std::string_view from, std::string_view to) {
+  if (!transitions_ || from == to) return;
+  transitions_->record({0, static_cast<std::uint64_t>(now_.time_since_epoch().count()), "nmt", from, to, cause_.transition,
+                        cause_.cause, cause_.value, cause_.detail});
+}
+
+void Node::communication_error(CommError error, std::uint32_t evidence) {
+  // A state change that follows (1029h:01, or the product's own reaction) names the error.
+  const TransitionCause cause = error == CommError::HeartbeatConsumer ? TransitionCause::HeartbeatTimeout
+                                : error == CommError::LifeGuarding   ? TransitionCause::GuardingTimeout
+                                                                     : TransitionCause::BusOff;
+  const CauseScope scope(*this, {cause, evidence, error == CommError::BusOffRecovered ? "recovered" : "", "1029h:01"});
   if (app().on_communication_error(error)) return;
   const auto& p = policy_.error_control;
   if (error == CommError::BusOffRecovered) {

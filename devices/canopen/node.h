@@ -13,6 +13,7 @@
 #include "devices/canopen/nmt_state.h"
 #include "devices/canopen/node_policy.h"
 #include "devices/canopen/object_dictionary.h"
+#include "devices/transition_log.h"
 #include "sim/bus.h"
 #include "sim/scheduler.h"
 
@@ -39,6 +40,9 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   Node& operator=(const Node&) = delete;
 
   void set_application(Application* app) { app_ = app; }
+  /// Where the NMT state machine records its transitions (the Device's log); nullptr = nowhere.
+  void set_transition_log(devices::TransitionLog* log) { transitions_ = log; }
+  devices::TransitionLog* transition_log() const { return transitions_; }
   Application& app() { return app_ ? *app_ : null_app_; }
   /// Adds an LSS slave (CiA 305). Identity comes from 0x1018.
   void enable_lss(const LssPolicy& policy);
@@ -84,8 +88,8 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   // --- actions --------------------------------------------------------------------------------
   /// Transmits a frame (dropped while powered off, silent or bus-off).
   void send(const sim::CanFrame& frame);
-  /// Executes an NMT command as if received (also used for internal state changes).
-  void execute_nmt(NmtCommand command);
+  /// Executes an NMT command as if received; `sender` names who sent it in the transition log.
+  void execute_nmt(NmtCommand command, std::string_view sender = "the master");
   /// Changes the NMT state directly (e.g. error behaviour 0x1029 → Pre-operational).
   void set_nmt_state(NmtState state);
   /// Bus-off (CAN controller fault): no frame in or out, the device keeps running.
@@ -112,8 +116,33 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   void rebuild_dispatch();
   /// A communication error (life guarding, heartbeat consumer) began / ended: the application
   /// may handle it; otherwise EMCY per policy and the 0x1029:01 reaction.
-  void communication_error(CommError error);
+  /// `evidence`: the heartbeat producer's node-ID, the guarding life time in ms (transition log).
+  void communication_error(CommError error, std::uint32_t evidence = 0);
   void communication_recovered(CommError error);
+
+  // --- transition log -------------------------------------------------------------------------
+  /// Why the NMT state changes now: set by whoever starts a change (command, timeout, power) for
+  /// as long as the change and its consequences run (CauseScope), read when a transition is
+  /// recorded. A product's application reads it too (node().cause()): a DSP 408 TR_8 forced by
+  /// NMT Stop names the Stop.
+  struct NmtCause {
+    devices::TransitionCause cause = devices::TransitionCause::Internal;
+    std::uint32_t value = 0;
+    std::string_view detail;
+    std::string_view transition;
+  };
+  class CauseScope {
+   public:
+    CauseScope(Node& n, NmtCause c) : node_(n), saved_(n.cause_) { n.cause_ = c; }
+    ~CauseScope() { node_.cause_ = saved_; }
+    CauseScope(const CauseScope&) = delete;
+    CauseScope& operator=(const CauseScope&) = delete;
+
+   private:
+    Node& node_;
+    NmtCause saved_;
+  };
+  const NmtCause& cause() const { return cause_; }
 
   // Counters for diagnostics and tests.
   struct Stats {
@@ -146,6 +175,7 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   void reset_application();
   void reset_communication();
   void send_boot_up();
+  void record_nmt(std::string_view from, std::string_view to);
   /// The node may use the bus: it has no rate of its own to compare, or it matches the bus's.
   /// Inline: every frame in and out asks, and a bus without a rate answers at once.
   bool on_bus_rate() const { return !bus_ || bus_->bit_rate_kbit() == 0 || own_rate_matches_bus(); }
@@ -188,6 +218,10 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   std::unique_ptr<StoreRestore> store_;
   std::unique_ptr<LssSlave> lss_;
   Stats stats_;
+  devices::TransitionLog* transitions_ = nullptr;
+  NmtCause cause_;
+  NmtCause boot_cause_;   ///< what started the pending boot-up (power, reset command)
+  bool ever_powered_ = false;
 };
 
 }  // namespace canopen

@@ -78,6 +78,7 @@ Dsv::Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
   set_delivery_value(0x2042, 0, {static_cast<std::uint8_t>(options_.delivery_mode_of_operation)});
   install();
   n.set_application(this);
+  n.set_transition_log(&transition_log_);
 }
 
 void Dsv::install_device_hooks() {

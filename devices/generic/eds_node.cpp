@@ -40,7 +40,9 @@ std::unique_ptr<EdsNode> EdsNode::load(const std::string& eds_path, const Device
   return device;
 }
 
-EdsNode::EdsNode(std::unique_ptr<canopen::Node> node) : node_(std::move(node)) {}
+EdsNode::EdsNode(std::unique_ptr<canopen::Node> node) : node_(std::move(node)) {
+  node_->set_transition_log(&transition_log_);
+}
 
 void EdsNode::install_operator_checks() {
   // Application area only: the communication area stays configurable by the master.

@@ -21,6 +21,17 @@ constexpr std::uint32_t kNmtStartupAuto = 0x08, kNmtStartupManual = 0x0C;
 constexpr std::uint16_t kEventTimer = 5;
 }  // namespace
 
+namespace {
+// The bits the manual documents (6500h bit 3 copies 6000h bit 3; 6505h: "not supported").
+constexpr devices::DiagramBit kStatusBits[] = {{3, "code sequence"}};
+constexpr devices::DiagramBit kAlarmBits[] = {{0, "position error"}, {12, "EEPROM error"}, {13, "parameter error"}};
+}  // namespace
+
+const cia406::StatusBitNames& Application::status_bits() {
+  static const cia406::StatusBitNames kNames{kStatusBits, kAlarmBits, {}};
+  return kNames;
+}
+
 Application::Application(canopen::Node& node, const Settings& settings)
     : node_(node), settings_(settings), diagnostics_(node, settings) {
   (void)signal_.parse(settings.signal);  // validated by parse_settings
@@ -193,6 +204,7 @@ bool Application::autostart() const {
 void Application::on_nmt_state_changed(NmtState from, NmtState to) {
   // Boot-up done: with autostart the node starts as if it received NMT Start (one-shot TPDO1).
   if (from == NmtState::Initialising && to == NmtState::PreOperational && autostart()) {
+    const canopen::Node::CauseScope scope(node_, {devices::TransitionCause::Internal, 0, "autostart (start-up setting)", "autostart"});
     node_.set_nmt_state(NmtState::Operational);
   }
 }
@@ -259,6 +271,7 @@ void Application::process(sim::Time now, sim::Duration) {
   }
   if (next_sample_ <= now) next_sample_ = now + period;
   diagnostics_.process();
+  status_recorder_.check();
 }
 
 }  // namespace hlt1100

@@ -14,6 +14,7 @@
 #include "devices/profiles/cia406/linear_position.h"
 #include "devices/profiles/cia406/motion_estimator.h"
 #include "devices/profiles/cia406/scripted_input.h"
+#include "devices/profiles/cia406/status_machines.h"
 
 namespace hlt1100 {
 
@@ -37,6 +38,8 @@ class Application final : public canopen::Application {
   void on_nmt_state_changed(canopen::NmtState from, canopen::NmtState to) override;
   bool on_communication_error(canopen::CommError error) override;
   void process(sim::Time now, sim::Duration dt) override;
+  /// The CiA 406 bits this product's manual names (machines cia406.status/alarms/warnings).
+  static const cia406::StatusBitNames& status_bits();
 
  private:
   void sample(sim::Time now, bool evaluate_alarms);
@@ -65,6 +68,7 @@ class Application final : public canopen::Application {
   canopen::OdEntry* position_ = nullptr;
   canopen::OdEntry* speed_ = nullptr;
   canopen::OdEntry* status_ = nullptr;
+  cia406::StatusRecorder status_recorder_{node_, status_bits()};
 };
 
 }  // namespace hlt1100

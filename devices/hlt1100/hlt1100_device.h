@@ -10,6 +10,7 @@
 
 #include "devices/device.h"
 #include "devices/profiles/cia406/profile_status.h"
+#include "devices/profiles/cia406/status_machines.h"
 #include "devices/hlt1100/hlt1100_application.h"
 #include "devices/hlt1100/hlt1100_settings.h"
 #include "devices/registry.h"
@@ -26,6 +27,11 @@ class Device final : public devices::Device {
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
   devices::ProfileStatus profile_status() override { return cia406::profile_status(node_->od()); }
+  std::vector<devices::MachineView> machines() override {
+    auto out = devices::Device::machines();
+    cia406::append_status_machines(*node_, Application::status_bits(), out);
+    return out;
+  }
 
   Application& application() { return *app_; }
   const Settings& settings() const { return *settings_; }

@@ -62,6 +62,7 @@ Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
   }
   install();
   n.set_application(this);
+  n.set_transition_log(&transition_log_);
 }
 
 void Md2::reset_model() {

@@ -73,6 +73,7 @@ VtvpcdDevice::VtvpcdDevice(Settings settings)
                                           settings_.node_id);
   install_communication_rules(*node_, settings_);
   node_->set_application(this);
+  node_->set_transition_log(&transition_log_);
   auto& od = node_->od();
   params_ = std::make_unique<CardParameters>(od);
   faults_ = std::make_unique<FaultMonitor>(node_->emergency(), settings_);
@@ -175,8 +176,51 @@ void VtvpcdDevice::power_off() {
 
 // ---- application events -------------------------------------------------------------------------
 
+std::string_view VtvpcdDevice::run_state() const {
+  if (!node_->powered()) return "OFF";
+  if (initialising_) return "INITIALISING";
+  if (faults_->stop_active()) return "FAULT_STOP";
+  return enable_ < 0.5 ? "NOT_ENABLED" : "RUNNING";
+}
+
+void VtvpcdDevice::note_run_state(devices::TransitionCause cause, std::uint32_t value, std::string_view detail) {
+  const std::string_view to = run_state(), from = recorded_state_;
+  if (to == from) return;
+  recorded_state_ = to;
+  std::string_view name;
+  if (to == "OFF") name = "power off";
+  else if (to == "INITIALISING") name = cause == devices::TransitionCause::NmtCommand ? "NMT 81h" : "power on";
+  else if (from == "INITIALISING") name = "boot-up";
+  else if (to == "FAULT_STOP") name = "stop fault";
+  else if (from == "FAULT_STOP") name = "acknowledge";
+  else name = to == "RUNNING" ? "enable" : "disable";
+  transition_log_.record({0, static_cast<std::uint64_t>(node_->now().time_since_epoch().count()), "vtvpcd", from, to, name,
+                          cause, value, detail});
+}
+
+void VtvpcdDevice::note_cycle_state(bool enable_rising) {
+  const std::string_view to = run_state();
+  if (to == recorded_state_) return;
+  if (to == "FAULT_STOP") {
+    for (const auto& d : fault_definitions()) {  // the stop fault that stopped the card
+      if (d.reaction != Reaction::Stop || !faults_->active(d.condition)) continue;
+      note_run_state(devices::TransitionCause::DeviceFault, d.emcy, d.name);
+      return;
+    }
+  }
+  if (recorded_state_ == "FAULT_STOP" && !enable_rising) {
+    note_run_state(devices::TransitionCause::Internal, 0, "the fault's cause is gone");
+    return;
+  }
+  note_run_state(devices::TransitionCause::Input, enable_ < 0.5 ? 0 : 1, "enable input");
+}
+
+void VtvpcdDevice::on_power_off() { note_run_state(devices::TransitionCause::Power, 0, {}); }
+
 void VtvpcdDevice::on_reset_application() {
   // Power-on or "reset of amplifier card": the RAM image is gone, the loop starts from scratch.
+  initialising_ = true;
+  note_run_state(node_->cause().cause, node_->cause().value, node_->cause().detail);
   controller_.reset();
   loop_monitor_.reset();
   faults_->reset();
@@ -227,6 +271,10 @@ void VtvpcdDevice::after_reset_communication() {
 }
 
 void VtvpcdDevice::on_nmt_state_changed(canopen::NmtState from, canopen::NmtState to) {
+  if (from == canopen::NmtState::Initialising && initialising_) {
+    initialising_ = false;  // the boot-up message went out: the card runs
+    note_run_state(node_->cause().cause, node_->cause().value, node_->cause().detail);
+  }
   if (from == canopen::NmtState::Initialising && to == canopen::NmtState::PreOperational && watchdog_pending_) {
     watchdog_pending_ = false;
     faults_->signal_event(Condition::Watchdog);
@@ -288,6 +336,7 @@ void VtvpcdDevice::control_cycle(double dt_s) {
     faults_->set_detected(Condition::LoopFaultPressure, loop_monitor_.pressure_fault());
   }
   faults_->update(enable_rising);
+  note_cycle_state(enable_rising);
 
   // Measured values; a broken transducer reads 0.
   const bool lvdt_ok = !faults_->active(Condition::LvdtElectronics);
@@ -356,7 +405,7 @@ void VtvpcdDevice::publish(const SetSelection& sel, double alpha_meas, double p_
 devices::ProfileStatus VtvpcdDevice::profile_status() {
   devices::ProfileStatus s;
   s.profile = devices::ProfileStatus::Profile::Vtvpcd;
-  s.state = faults_->stop_active() ? "FAULT_STOP" : enable_ < 0.5 ? "NOT_ENABLED" : "RUNNING";
+  s.state = run_state();
   for (const auto& d : fault_definitions()) {
     if (!faults_->active(d.condition) || s.fault_count >= s.faults.size()) continue;
     s.faults[s.fault_count++] = d.name;

@@ -43,9 +43,13 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   devices::ProfileStatus profile_status() override;
   /// Unpowered, the pilot valve is de-energised.
   void power_off() override;
+  /// The card's run state (manual §3.1: "internal operational states ... fault states, waiting
+  /// for enable"): OFF, INITIALISING (until the boot-up message), NOT_ENABLED, RUNNING, FAULT_STOP.
+  std::string_view run_state() const;
 
   // canopen::Application
   void on_reset_application() override;
+  void on_power_off() override;
   void on_reset_communication() override;
   void after_reset_communication() override;
   void on_nmt_command(canopen::NmtCommand command) override;
@@ -69,6 +73,10 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   void control_cycle(double dt_s);
   void publish(const SetSelection& sel, double alpha_meas, double p_a, double p_b, std::uint16_t di_word);
   void apply_plant_to_inputs();
+  /// Records a change of run_state() in the transition log (machine "vtvpcd").
+  void note_run_state(devices::TransitionCause cause, std::uint32_t value, std::string_view detail);
+  /// After a control cycle: a change of run state with its cause (a stop fault, the enable input).
+  void note_cycle_state(bool enable_rising);
 
   Settings settings_;
   std::unique_ptr<canopen::Node> node_;
@@ -117,6 +125,8 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   canopen::BoundEntry<std::uint16_t> bus_status_out_, discrete_inputs_out_, discrete_outputs_out_;
   sim::Duration cycle_debt_{0};
   bool previous_enable_ = true;
+  bool initialising_ = false;                ///< from power-on / NMT 81h until the boot-up message
+  std::string_view recorded_state_ = "OFF";  ///< run_state() as last recorded
   bool lifeguard_timeout_ = false;
   bool heartbeat_timeout_ = false;
   bool watchdog_pending_ = false;

@@ -96,7 +96,10 @@ void Diagnostics::apply(std::uint8_t sub) {
   }
 }
 
-void Diagnostics::apply_device_error_behaviour() { apply(2); }
+void Diagnostics::apply_device_error_behaviour() {
+  const canopen::Node::CauseScope scope(node_, {devices::TransitionCause::DeviceFault, 0, "position error", "1029h:02"});
+  apply(2);
+}
 void Diagnostics::apply_communication_error_behaviour() { apply(1); }
 
 }  // namespace wdga

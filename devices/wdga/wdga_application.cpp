@@ -37,6 +37,19 @@ bool restricted_cob_id(std::uint32_t id) {
 }
 }  // namespace
 
+namespace {
+// The bits the manual documents (Tab. 7.11, 7.12, 8.61).
+constexpr devices::DiagramBit kStatusBits[] = {{0, "code sequence"}, {2, "scaling function"}};
+constexpr devices::DiagramBit kAlarmBits[] = {{0, "position error"}};
+constexpr devices::DiagramBit kWarningBits[] = {
+    {0, "frequency limit exceeded"}, {12, "over-temperature"}, {13, "under-temperature"}, {14, "temperature read failed"}};
+}  // namespace
+
+const cia406::StatusBitNames& Application::status_bits() {
+  static const cia406::StatusBitNames kNames{kStatusBits, kAlarmBits, kWarningBits};
+  return kNames;
+}
+
 Application::Application(canopen::Node& node, const Settings& settings)
     : node_(node),
       settings_(settings),
@@ -398,7 +411,10 @@ void Application::on_nmt_state_changed(NmtState from, NmtState to) {
   // 1F80h [M §7.10]: 08h Operational by itself; 02h also "start all nodes".
   const auto startup = node_.od().get<std::uint32_t>(obj::kNmtStartup);
   if (startup == 0x02) node_.send(sim::CanFrame::data_frame(0x000, {0x01, 0x00}));
-  if (startup == 0x02 || startup == 0x08) node_.set_nmt_state(NmtState::Operational);
+  if (startup == 0x02 || startup == 0x08) {
+    const canopen::Node::CauseScope scope(node_, {devices::TransitionCause::Internal, startup, "NMT start-up 1F80h", "1F80h"});
+    node_.set_nmt_state(NmtState::Operational);
+  }
 }
 
 bool Application::on_communication_error(canopen::CommError error) {
@@ -412,6 +428,7 @@ bool Application::on_communication_error(canopen::CommError error) {
 
 void Application::bus_off_recovered() {
   diagnostics_.signal(kEmcyBusOffRecovered, kErCommunication, {0x01, 0, 0, 0, 0});
+  const canopen::Node::CauseScope scope(node_, {devices::TransitionCause::BusOff, 0, "recovered", "1029h:01"});
   diagnostics_.apply_communication_error_behaviour();
 }
 
@@ -432,6 +449,7 @@ void Application::process(sim::Time now, sim::Duration) {
                                                                    : (diagnostics_.warnings() & ~kWarnFrequency);
   diagnostics_.set_warnings(warnings);
   temperature_.process(now);
+  status_recorder_.check();
 }
 
 }  // namespace wdga

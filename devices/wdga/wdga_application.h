@@ -12,6 +12,7 @@
 #include "devices/wdga/measurement.h"
 #include "devices/wdga/temperature_monitor.h"
 #include "devices/wdga/wdga_settings.h"
+#include "devices/profiles/cia406/status_machines.h"
 
 namespace wdga {
 
@@ -48,6 +49,8 @@ class Application final : public canopen::Application {
     return true;
   }
   void process(sim::Time now, sim::Duration dt) override;
+  /// The CiA 406 bits this product's manual names (machines cia406.status/alarms/warnings).
+  static const cia406::StatusBitNames& status_bits();
 
  private:
   void bind_node_objects();
@@ -67,6 +70,7 @@ class Application final : public canopen::Application {
   Diagnostics diagnostics_;
   Measurement measurement_;
   TemperatureMonitor temperature_;
+  cia406::StatusRecorder status_recorder_{node_, status_bits()};
   sim::Time next_cycle_{};
   bool position_error_ = false;
   bool eeprom_failing_ = false;

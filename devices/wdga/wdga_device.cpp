@@ -69,6 +69,7 @@ Device::Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const s
   app_ = std::make_unique<Application>(*node_, *settings_);
   app_->bind();
   node_->set_application(app_.get());
+  node_->set_transition_log(&transition_log_);
 }
 
 std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std::string& error) {

@@ -11,6 +11,7 @@
 
 #include "devices/device.h"
 #include "devices/profiles/cia406/profile_status.h"
+#include "devices/profiles/cia406/status_machines.h"
 #include "devices/registry.h"
 #include "devices/wdga/wdga_application.h"
 #include "devices/wdga/wdga_settings.h"
@@ -29,6 +30,11 @@ class Device final : public devices::Device {
   std::vector<devices::FaultInfo> faults() const override;
   std::string inject_fault(std::string_view name, bool active) override;
   devices::ProfileStatus profile_status() override { return cia406::profile_status(node_->od()); }
+  std::vector<devices::MachineView> machines() override {
+    auto out = devices::Device::machines();
+    cia406::append_status_machines(*node_, Application::status_bits(), out);
+    return out;
+  }
   void power_off() override;
   void power_on(sim::Time now) override;
 

@@ -48,7 +48,7 @@ void ChannelControl::install() {
   // A control word under local or PASO control: SDO gets 0x08000021, an RPDO is dropped.
   od_.add_check(cw, 0, local_lock(), CheckStage::State);
   od_.after_write<std::uint16_t>(cw, 0, [this](std::uint16_t value, Origin origin) {
-    if (from_bus(origin)) dsm_.write_control_word(value);
+    if (from_bus(origin)) dsm_.write_control_word(value, origin == Origin::Sdo ? "SDO" : "RPDO");
   });
 
   od_.add_read_hook(objects_.status_word, 0, [this](OdEntry& e, Origin) {
@@ -83,8 +83,8 @@ void ChannelControl::apply_source() {
   dsm_.set_local(source_ != ControlSource::Bus);
 }
 
-void ChannelControl::power_on() {
-  dsm_.power_on();
+void ChannelControl::power_on(DeviceStateMachine::Cause cause) {
+  dsm_.power_on(cause);
   apply_source();
   publish_status();
 }
@@ -98,7 +98,7 @@ void ChannelControl::set_paso_control(bool on) {
 devices::ProfileStatus ChannelControl::profile_status() const {
   devices::ProfileStatus s;
   s.profile = devices::ProfileStatus::Profile::Dsp408;
-  s.state = to_string(dsm_.state());
+  s.state = dsm_.off() ? std::string_view("OFF") : to_string(dsm_.state());  // unpowered: no state to claim
   s.control_word = dsm_.control_word();
   s.status_word = status_word();
   s.transitions = dsm_.transitions();

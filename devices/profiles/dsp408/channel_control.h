@@ -43,7 +43,7 @@ class ChannelControl {
   ChannelControl& operator=(const ChannelControl&) = delete;
 
   /// Application reset: INIT, control word 0, control source from 0x604F.
-  void power_on();
+  void power_on(DeviceStateMachine::Cause cause = {devices::TransitionCause::Boot, 0, {}});
 
   DeviceStateMachine& dsm() { return dsm_; }
   const DeviceStateMachine& dsm() const { return dsm_; }

@@ -8,26 +8,74 @@ namespace {
 // More than any chain can take (INIT → DISABLED → HOLD → ACTIVE is three steps, a fault reset
 // followed by a chain four); a guard, not a limit the manual knows.
 constexpr int kMaxChain = 8;
+
+/// The manual's name of a step (§5.2.2); TR_567 and TR_0 are named by their callers.
+std::string_view transition_name(DeviceState from, DeviceState to) {
+  using S = DeviceState;
+  if (to == S::FaultReaction) return "TR_8";
+  if (from == S::FaultReaction) return to == S::FaultHold ? "TR_9" : "TR_12";
+  if (from == S::Fault || from == S::FaultHold) return to == S::Hold ? "TR_11" : "TR_10";
+  if (from == S::NotReady && to == S::Init) return "TR_1";
+  if (from == S::Init && to == S::Disabled) return "TR_2";
+  if (from == S::Disabled && to == S::Hold) return "TR_3";
+  if (from == S::Hold && to == S::Active) return "TR_4";
+  if (from == S::Active && to == S::Hold) return "TR_5";
+  if (from == S::Hold && to == S::Disabled) return "TR_6";
+  if (from == S::Disabled && to == S::Init) return "TR_7";
+  return "";
+}
+
+/// Sets the cause of the changes an entry point runs, and puts the previous one back after.
+class CauseScope {
+ public:
+  CauseScope(DeviceStateMachine::Cause& slot, DeviceStateMachine::Cause c) : slot_(slot), saved_(slot) { slot = c; }
+  ~CauseScope() { slot_ = saved_; }
+  CauseScope(const CauseScope&) = delete;
+  CauseScope& operator=(const CauseScope&) = delete;
+
+ private:
+  DeviceStateMachine::Cause& slot_;
+  DeviceStateMachine::Cause saved_;
+};
 }  // namespace
 
-void DeviceStateMachine::go(DeviceState to) {
+void DeviceStateMachine::record(std::string_view from, std::string_view to, std::string_view transition) {
+  if (!recorder_) return;
+  recorder_(devices::Transition{0, 0, machine_, from, to, transition, cause_.cause, cause_.value, cause_.detail});
+}
+
+void DeviceStateMachine::go(DeviceState to, std::string_view transition) {
   const DeviceState from = state_;
   if (from == to) return;
   state_ = to;
   last_ = {from, to, cw_};
   ++transitions_;
+  record(to_string(from), to_string(to), transition.empty() ? transition_name(from, to) : transition);
   if (listener_) listener_(from, to);
 }
 
-void DeviceStateMachine::power_on() {
+void DeviceStateMachine::power_on(Cause cause) {
+  const CauseScope scope(cause_, cause);
+  // From OFF it is the manual's TR_0; an application reset (NMT Reset Node) runs the self test
+  // again without a name of its own.
+  record(off_ ? "OFF" : to_string(state_), to_string(DeviceState::NotReady), off_ ? "TR_0" : "");
+  off_ = false;
   cw_ = 0;
   state_ = DeviceState::NotReady;
   go(DeviceState::Init);
 }
 
-void DeviceStateMachine::write_control_word(std::uint16_t cw) {
+void DeviceStateMachine::power_off() {
+  if (off_) return;
+  const CauseScope scope(cause_, {devices::TransitionCause::Power, 0, {}});
+  record(to_string(state_), "OFF", "");
+  off_ = true;
+}
+
+void DeviceStateMachine::write_control_word(std::uint16_t cw, std::string_view via) {
   const bool reset_edge = (cw & control::kResetFault) && !(cw_ & control::kResetFault);
   cw_ = cw;
+  const CauseScope scope(cause_, {devices::TransitionCause::ControlWord, cw, via});
   if (!local_) evaluate(reset_edge);
 }
 
@@ -82,7 +130,8 @@ void DeviceStateMachine::evaluate(bool reset_edge) {
   }
 }
 
-bool DeviceStateMachine::error() {
+bool DeviceStateMachine::error(Cause cause) {
+  const CauseScope scope(cause_, cause);
   switch (state_) {
     case DeviceState::Init:
     case DeviceState::Disabled:
@@ -96,14 +145,15 @@ bool DeviceStateMachine::error() {
   }
 }
 
-bool DeviceStateMachine::forced_fault(bool from_init) {
+bool DeviceStateMachine::forced_fault(bool from_init, Cause cause) {
   if (state_ == DeviceState::Init && !from_init) return false;
-  return error();
+  return error(cause);
 }
 
-void DeviceStateMachine::force_init() {
+void DeviceStateMachine::force_init(Cause cause) {
   if (state_ == DeviceState::Disabled || state_ == DeviceState::Hold || state_ == DeviceState::Active) {
-    go(DeviceState::Init);  // TR_567
+    const CauseScope scope(cause_, cause);
+    go(DeviceState::Init, "TR_567");
   }
 }
 
@@ -111,6 +161,7 @@ void DeviceStateMachine::set_enable_input(bool on) {
   const bool was = enable_;
   enable_ = on;
   if (was == on) return;
+  const CauseScope scope(cause_, {devices::TransitionCause::Input, on ? 1u : 0u, "enable input"});
   if (local_) {
     if (on && (state_ == DeviceState::Init || state_ == DeviceState::Disabled)) {
       if (state_ == DeviceState::Init) go(DeviceState::Disabled);
@@ -125,7 +176,7 @@ void DeviceStateMachine::set_enable_input(bool on) {
     return;
   }
   if (!on) {
-    force_init();
+    force_init(cause_);
   } else {
     evaluate(false);
   }

@@ -24,11 +24,22 @@ void ValveApplication::set_delivery_value(std::uint16_t index, std::uint8_t sub,
 void ValveApplication::install() {
   auto& od = node_.od();
   install_guarding_lock(od);
+  static constexpr std::string_view kChannelMachines[] = {"dsp408.ch1", "dsp408.ch2", "dsp408.ch3", "dsp408.ch4",
+                                                          "dsp408.ch5", "dsp408.ch6", "dsp408.ch7", "dsp408.ch8"};
   for (int i = 0; i < channel_count(); ++i) {
     channel(i).dsm().set_fault_reset([this] { return errors_.reset(); });
+    // One channel: the device's machine ("dsp408"); several: one machine per channel.
+    const std::string_view machine = channel_count() == 1 ? std::string_view("dsp408") : kChannelMachines[i % 8];
+    channel(i).dsm().set_recorder(machine, [this](const devices::Transition& t) {
+      if (auto* log = node_.transition_log()) {
+        devices::Transition stamped = t;
+        stamped.t_us = static_cast<std::uint64_t>(node_.now().time_since_epoch().count());
+        log->record(stamped);
+      }
+    });
   }
-  errors_.set_on_error([this](std::uint16_t) {
-    for (int i = 0; i < channel_count(); ++i) channel(i).dsm().error();
+  errors_.set_on_error([this](std::uint16_t code) {
+    for (int i = 0; i < channel_count(); ++i) channel(i).dsm().error({devices::TransitionCause::DeviceFault, code, {}});
   });
   // A restore of the application group (sub 1 "all", sub 3) waits for the next reset; a save
   // of the group cancels it, as does a power cycle.
@@ -67,8 +78,12 @@ void ValveApplication::on_reset_application() {
     }
   }
   errors_.clear();
-  for (int i = 0; i < channel_count(); ++i) channel(i).power_on();
+  for (int i = 0; i < channel_count(); ++i) channel(i).power_on(node_cause());
   reset_model();
+}
+
+void ValveApplication::on_power_off() {
+  for (int i = 0; i < channel_count(); ++i) channel(i).dsm().power_off();
 }
 
 void ValveApplication::on_reset_communication() {
@@ -116,7 +131,7 @@ void ValveApplication::on_nmt_command(NmtCommand command) {
       }
       break;
     case NmtCommand::ResetNode:
-      for (int i = 0; i < channel_count(); ++i) channel(i).dsm().force_init();  // TR_567
+      for (int i = 0; i < channel_count(); ++i) channel(i).dsm().force_init(node_cause());  // TR_567
       fault_after_boot_up_ = false;
       break;
     default: break;
@@ -125,7 +140,7 @@ void ValveApplication::on_nmt_command(NmtCommand command) {
 
 bool ValveApplication::force_communication_fault() {
   bool any = false;
-  for (int i = 0; i < channel_count(); ++i) any |= channel(i).dsm().forced_fault(common_.nmt_fault_from_init);
+  for (int i = 0; i < channel_count(); ++i) any |= channel(i).dsm().forced_fault(common_.nmt_fault_from_init, node_cause());
   return any;
 }
 

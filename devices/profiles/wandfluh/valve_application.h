@@ -33,6 +33,7 @@ class ValveApplication : public canopen::Application {
 
   // canopen::Application
   void on_reset_application() override;
+  void on_power_off() override;
   void on_reset_communication() override;
   void after_reset_communication() override;
   void on_nmt_command(canopen::NmtCommand command) override;
@@ -63,6 +64,11 @@ class ValveApplication : public canopen::Application {
  private:
   /// TR_8 forced by the communication state machine; true if a channel changed.
   bool force_communication_fault();
+  /// What the node's state machine is doing now, as the cause of a channel's transition.
+  dsp408::DeviceStateMachine::Cause node_cause() const {
+    const auto& c = node_.cause();
+    return {c.cause, c.value, c.detail};
+  }
 
   DeviceErrors errors_;
   NodeAddress address_;

@@ -1,0 +1,67 @@
+#include "devices/profiles/cia406/status_machines.h"
+
+#include <array>
+#include <string_view>
+
+namespace cia406 {
+
+namespace {
+
+struct Word {
+  std::uint16_t index;
+  std::string_view machine, title, kind, note;
+};
+constexpr std::array<Word, 3> kWords = {{
+    {0x6500, "cia406.status", "Operating status 6500h (CiA 406)", "normal",
+     "Mirrors the operating parameters 6000h in effect; each named bit is shown as a state of its own."},
+    {0x6503, "cia406.alarms", "Alarms 6503h (CiA 406)", "fault",
+     "An alarm bit is set while its condition lasts (the product sends its EMCY); several may be set at once."},
+    {0x6505, "cia406.warnings", "Warnings 6505h (CiA 406)", "fault",
+     "A warning bit is set while its condition lasts; warnings do not stop the position output."},
+}};
+
+std::span<const devices::DiagramBit> bits_of(const StatusBitNames& n, std::size_t k) {
+  return k == 0 ? n.status : k == 1 ? n.alarms : n.warnings;
+}
+
+std::uint16_t word(const canopen::ObjectDictionary& od, std::uint16_t index) {
+  const auto* e = od.entry(index, 0);
+  return e ? e->as<std::uint16_t>() : std::uint16_t{0};
+}
+
+}  // namespace
+
+std::vector<devices::MachineDiagram> status_diagrams(const StatusBitNames& names) {
+  std::vector<devices::MachineDiagram> out;
+  for (std::size_t k = 0; k < kWords.size(); ++k) {
+    const auto& w = kWords[k];
+    out.push_back(devices::MachineDiagram{w.machine, w.title, {}, {}, w.note, w.index, bits_of(names, k), w.kind});
+  }
+  return out;
+}
+
+void append_status_machines(const canopen::Node& node, const StatusBitNames& names, std::vector<devices::MachineView>& out) {
+  for (const auto& d : status_diagrams(names))
+    out.push_back({d, node.powered() ? devices::set_bit_names(d, word(node.od(), d.word_index)) : "OFF"});
+}
+
+void StatusRecorder::check() {
+  for (std::size_t k = 0; k < kWords.size(); ++k) {
+    const std::uint16_t now = word(node_.od(), kWords[k].index);
+    const std::uint16_t changed = now ^ last_[k];
+    if (changed == 0) continue;
+    last_[k] = now;
+    auto* log = node_.transition_log();
+    if (!log) continue;
+    for (const auto& b : bits_of(names_, k)) {
+      if (!((changed >> b.bit) & 1u)) continue;
+      const bool set = (now >> b.bit) & 1u;
+      // The object's new value is the evidence; detail names the object (static text).
+      log->record({0, static_cast<std::uint64_t>(node_.now().time_since_epoch().count()), kWords[k].machine,
+                   set ? std::string_view("none") : b.name, set ? b.name : std::string_view("none"), set ? "set" : "cleared",
+                   devices::TransitionCause::Internal, now, kWords[k].title});
+    }
+  }
+}
+
+}  // namespace cia406
