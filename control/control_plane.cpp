@@ -45,6 +45,8 @@ constexpr std::size_t kFindingsPage = 100;
 constexpr auto kSdoWait = std::chrono::milliseconds(5000);
 // POST /api/sync: a minute between SYNCs is far beyond any cycle a lesson shows.
 constexpr std::int64_t kMaxSyncPeriodMs = 60000;
+// POST /api/restart: the rebuild (dictionaries, EDS files, plant) takes well under a second.
+constexpr auto kRestartWait = std::chrono::seconds(10);
 
 /// A client error: answered as {"error": reason} with its status, nothing changed.
 struct HttpError {
@@ -438,10 +440,11 @@ struct ControlPlane::Server {
         if (!v || *v < 0) throw HttpError{400, "since must be a finding count (a non-negative integer)"};
         since = static_cast<std::size_t>(*v);
       }
-      const auto* m = monitor;
       res.status = 200;
       res.type = "application/json";
-      res.body = call<std::string>([m, since](const scenario::RunContext&) {
+      // The run's monitor as the command finds it (a restart replaces it).
+      res.body = call<std::string>([since](const scenario::RunContext& c) {
+        const auto* m = c.master_monitor;
         return scenario::findings_json(m->findings(), m->rules(), m->bus_names(), since, kFindingsPage);
       });
     }));
@@ -456,6 +459,7 @@ struct ControlPlane::Server {
     router.add("POST", "/api/sync", guarded([this](const http::Request& req, http::Response& res) { sync_control(req, res); }));
     router.add("GET", R"(/api/nodes/([^/]+)/pdos)", guarded([this](const http::Request& req, http::Response& res) { pdos(req, res); }));
     router.add("POST", R"(/api/nodes/([^/]+)/rpdo)", guarded([this](const http::Request& req, http::Response& res) { rpdo(req, res); }));
+    router.add("POST", "/api/restart", guarded([this](const http::Request&, http::Response& res) { restart(res); }));
 
   }
 
@@ -884,6 +888,14 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}, {"id", f.id}, {"data", hex_string(f.data.data(), f.dlc)}});
   }
 
+  void restart(http::Response& res) {
+    need_run();
+    auto done = cp.bridge_.request_restart();
+    if (done.wait_for(kRestartWait) != std::future_status::ready) throw HttpError{504, "the scenario did not restart in time"};
+    if (!done.get()) throw HttpError{503, "the run has ended"};
+    reply(res, 200, {{"ok", true}, {"clock", clock_json()}});
+  }
+
   void events(const http::Request& req, http::Response& res) {
     try {
       need_run();
@@ -944,6 +956,7 @@ std::string ControlPlane::url() const {
 void ControlPlane::attach(const scenario::RunContext& context) {
   bridge_.attach(context);
   auto& s = *server_;
+  if (s.hub) return;  // a restart (POST /api/restart): the same scenario, server and streams
   s.build_static(context);
   s.hub = std::make_unique<EventHub>(bridge_, s.catalog, StreamTopology{s.bus_names, s.node_names, s.node_bus},
                                      options_.max_streams);

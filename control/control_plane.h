@@ -45,6 +45,7 @@ class ControlPlane final : public scenario::RunExtension {
   void attach(const scenario::RunContext& context) override;
   bool before_tick(bool end_reached) override { return bridge_.before_tick(end_reached); }
   void detach() override;
+  bool wants_restart() override { return bridge_.wants_restart(); }
 
   SimBridge& bridge() { return bridge_; }
 

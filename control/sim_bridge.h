@@ -87,10 +87,18 @@ class SimBridge final : public scenario::RunExtension {
   explicit SimBridge(ClockOptions clock);
   ~SimBridge() override;
 
-  // scenario::RunExtension (scheduler thread)
+  // scenario::RunExtension (scheduler thread). attach again after a restart: the new run's
+  // context; the clock keeps its pause and speed, what belonged to the old run is dropped.
   void attach(const scenario::RunContext& context) override;
   bool before_tick(bool end_reached) override;
   void detach() override;
+  bool wants_restart() override { return restart_pending_; }
+
+  /// Asks the runner to rebuild the scenario at t = 0 at the next tick boundary (POST
+  /// /api/restart); the future holds true once the new run is attached, false if the run ended.
+  std::future<bool> request_restart();
+  /// Restarts so far (the stream tells its clients).
+  std::uint64_t restarts() const { return restarts_.load(); }
 
   // ---- any thread ---------------------------------------------------------------------------
   enum class Posted { Queued, Full, Ended };
@@ -252,6 +260,12 @@ class SimBridge final : public scenario::RunExtension {
 
   std::vector<LiveFault> live_faults_;
   int fault_ids_ = 0;
+
+  // Restart (scheduler thread, but for restarts_).
+  bool restart_pending_ = false;
+  std::vector<std::shared_ptr<std::promise<bool>>> restart_waiters_;
+  std::atomic<std::uint64_t> restarts_{0};
+  void forget_run();
 
   std::vector<scenario::SyncProducer> sync_;  ///< per bus
   bool sync_on_ = false;                      ///< any of them has a period

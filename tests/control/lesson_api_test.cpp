@@ -202,3 +202,77 @@ TEST_F(LessonApi, SyncRefusalsSayWhy) {
 }
 
 }  // namespace
+
+namespace {
+
+/// POST /api/restart on a plant of its own (virtual or real time).
+class LessonRestart : public ::testing::TestWithParam<bool> {};
+
+TEST_P(LessonRestart, RebuildsTheScenarioAtTimeZeroAndEveryNodeBootsAgain) {
+  auto s = scenario::load_scenario_file(VPLANT_REFERENCE_PLANT);
+  const bool realtime = GetParam();
+  if (realtime) s.clock.mode = scenario::ClockSpec::Mode::RealTime;
+  LivePlant p(std::move(s), scenario::default_environment());
+  const auto get = [&](const std::string& path) { return LivePlant::json_of(p.http().Get(path.c_str())); };
+  const auto wait_for_nmt = [&](const std::string& nmt) {
+    for (int i = 0; i < 400 && get("/api/nodes/hlt")["nmt"] != nmt; ++i) {
+      if (!realtime) p.run_ms(10);
+      else std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return get("/api/nodes/hlt")["nmt"] == nmt;
+  };
+  ASSERT_TRUE(wait_for_nmt("PRE-OPERATIONAL"));
+  ASSERT_EQ(p.post("/api/nmt", {{"command", "start"}, {"node", 0}})->status, 200);
+  ASSERT_TRUE(wait_for_nmt("OPERATIONAL"));
+  ASSERT_EQ(p.post("/api/sync", {{"period_ms", 10}})->status, 200);
+  const auto before = get("/api/clock")["t_us"].get<std::int64_t>();
+  EXPECT_GT(before, 0);
+
+  std::string stream;
+  std::mutex mu;
+  std::atomic<bool> stop{false};
+  httplib::Client sse("127.0.0.1", p.port());
+  sse.set_read_timeout(5, 0);
+  std::thread reader([&] {
+    sse.Get("/api/events", [&](const char* data, std::size_t n) {
+      std::lock_guard lk(mu);
+      stream.append(data, n);
+      return !stop.load();
+    });
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(150));
+  const auto r = p.post("/api/restart", json::object());
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 200) << r->body;
+  const auto answer = LivePlant::json_of(r);
+  EXPECT_LT(answer["clock"]["t_us"].get<std::int64_t>(), realtime ? 500000 : 1);
+  if (!realtime) {
+    EXPECT_TRUE(answer["clock"]["paused"].get<bool>());  // as it was
+  }
+  EXPECT_EQ(get("/api/sync")["period_ms"], 0);                     // the lesson's SYNC is off again
+  ASSERT_TRUE(wait_for_nmt("PRE-OPERATIONAL"));                     // booted again
+  if (!realtime) p.run_ms(600);                                     // the slowest boot-up too
+  for (int i = 0; i < 100; ++i) {
+    {
+      std::lock_guard lk(mu);
+      if (stream.find(" main 77F#00") != std::string::npos && stream.find(" main 73F#00") != std::string::npos) break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  stop = true;
+  reader.join();
+  EXPECT_NE(stream.find("event: restart"), std::string::npos);
+  // Every node's boot-up after the restart.
+  const auto restart_at = stream.find("event: restart");
+  for (const char* boot : {" main 73F#00", " main 702#00", " main 703#00", " main 705#00", " main 77F#00"})
+    EXPECT_NE(stream.find(boot, restart_at), std::string::npos) << boot;
+  // Restarted again at once: still answers.
+  ASSERT_EQ(p.post("/api/restart", json::object())->status, 200);
+  EXPECT_EQ(p.stop().count() >= 0, true);
+  EXPECT_EQ(p.exit_code(), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Clock, LessonRestart, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& i) { return i.param ? "RealTime" : "Virtual"; });
+
+}  // namespace
