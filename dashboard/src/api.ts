@@ -63,6 +63,8 @@ export interface StreamHandlers {
   clock(c: { t_us: number; paused: boolean; end_reached?: boolean }): void;
   dropped(d: { frames: number }): void;
   transition(t: Transition & { node: string }): void;
+  /** POST /api/restart by anyone: the run starts again at t = 0. */
+  restart(): void;
   connection(open: boolean): void;
 }
 
@@ -78,6 +80,7 @@ export function openStream(signals: readonly string[], rateHz: number, h: Stream
   on('clock', h.clock);
   on('dropped', h.dropped);
   on('transition', h.transition);
+  on('restart', h.restart);
   es.onopen = () => h.connection(true);
   es.onerror = () => h.connection(false);
   return es;

@@ -116,9 +116,15 @@ async function main(): Promise<void> {
     }
   }
 
-  async function loadTransitions(node: string): Promise<void> {
+  let machinesTimer: ReturnType<typeof setTimeout> | undefined;
+  function machinesSoon(node: string): void {
+    clearTimeout(machinesTimer);
+    machinesTimer = setTimeout(() => { if (node === store.selected) void loadMachines(node); }, 150);
+  }
+
+  async function loadTransitions(node: string, after?: number): Promise<void> {
     try {
-      store.addTransitions(node, await api.transitions(node));
+      store.addTransitions(node, await api.transitions(node, after));
       unavailable.delete('transitions');
     } catch (err) {
       unavailable.set('transitions', `The server keeps no transition history (${errorText(err)}).`);
@@ -313,7 +319,14 @@ async function main(): Promise<void> {
       },
       clock: (c) => store.setClock(c),
       dropped: (d) => trace.noteStreamDropped(d.frames),
-      transition: (t) => store.addTransitions(t.node, [t]),
+      transition: (t) => {
+        const h = store.history(t.node);
+        // the stream skips what did not fit: fill the gap from the node's history
+        if (t.node === store.selected && h.lastSeq >= 0 && t.seq > h.lastSeq + 1) void loadTransitions(t.node, h.lastSeq);
+        store.addTransitions(t.node, [t]);
+        if (t.node === store.selected) machinesSoon(t.node);  // bit machines' states, power
+      },
+      restart: () => afterRestart(),
       connection: (open) => {
         const s = $('connection');
         s.textContent = open ? 'live' : 'disconnected';

@@ -58,9 +58,13 @@ export function latestChain(history: readonly Transition[], machine: string): Tr
   return chain;
 }
 
-/** The state the machine is in: its newest entry's target when the history has one, else what the
- *  server described. */
-export function currentState(m: Machine, history: readonly Transition[]): string {
+/**
+ * The states the machine is in: its newest entry's target when the history has one, else what the
+ * server described. A bit machine (CiA 406 alarms, ...) is in every state whose bit is set, as the
+ * server lists them ("a + b", or "none").
+ */
+export function currentStates(m: Machine, history: readonly Transition[]): Set<string> {
+  if (m.bits) return new Set(m.state.split(' + '));
   const own = ofMachine(history, m.machine);
-  return own.length ? own[own.length - 1].to : m.state;
+  return new Set([own.length ? own[own.length - 1].to : m.state]);
 }

@@ -101,6 +101,8 @@ export interface Machine {
   states: MachineState[];
   edges: MachineEdge[];
   note: string;
+  /** Bit machines (cia406.*): the named bits; `state` is then the set bits' names joined by " + ", or "none". */
+  bits?: { bit: number; name: string }[];
 }
 export interface NodeMachines { node: string; powered: boolean; machines: Machine[] }
 

@@ -169,6 +169,9 @@ test('NMT start from the page brings every node to OPERATIONAL', async () => {
   for (const name of ['vtvpcd', 'dsv', 'md2', 'hlt', 'wdga']) {
     await page.waitForFunction((n) => document.querySelector(`[data-testid=nmt-${n}]`)?.textContent === 'OPERATIONAL', name);
   }
+  await byTestId('node-row-dsv').click();
+  await page.waitForSelector('[data-testid=diagram-nmt] [data-state=OPERATIONAL][data-current=true]');
+  await page.waitForSelector('[data-testid=transition-list] tbody tr[data-machine=nmt][data-transition="NMT 01h"]');
   // The trace decodes the NMT command the page sent.
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=NMT] td.decoded')]
     .some((td) => /start/i.test(td.textContent ?? '')));
@@ -182,6 +185,30 @@ test('control word 0x0007 by SDO drives the DSV to DEVICE_MODE_ACTIVE', async ()
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td.decoded')]
     .some((td) => /6040:00/.test(td.textContent ?? '') && /control ?word/i.test(td.textContent ?? '')));
   await shot('dsv-active', 'detail-section');
+});
+
+test('exercise 2 step 2: one write of 0x0000 from DEVICE_MODE_ACTIVE highlights TR_5, TR_6, TR_7, each on its own', async () => {
+  await byTestId('node-row-dsv').click();
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=DEVICE_MODE_ACTIVE][data-current=true]');
+  await byTestId('cw-preset-0x0000').click();
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=INIT][data-current=true]');
+  const marked = () => page.$$eval('[data-testid=diagram-dsp408] .edge.last', (es) =>
+    es.map((e) => ({ step: Number(e.getAttribute('data-step')), tr: e.getAttribute('data-transition') })).sort((a, b) => a.step - b.step).map((e) => e.tr));
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid=diagram-dsp408] .edge.last').length === 3);
+  assert.deepEqual(await marked(), ['TR_5', 'TR_6', 'TR_7']);
+  assert.equal(await page.locator('[data-testid=diagram-dsp408] .state.current').count(), 1);
+  // The transition list: three rows of the same write, newest first, the control word as cause.
+  const rows = await page.locator('[data-testid=transition-list] tbody tr[data-machine=dsp408]').evaluateAll((trs) =>
+    trs.slice(0, 3).map((tr) => ({ tr: tr.getAttribute('data-transition'), cause: tr.querySelector('td.cause')?.textContent ?? '' })));
+  assert.deepEqual(rows.map((r) => r.tr), ['TR_7', 'TR_6', 'TR_5']);
+  for (const r of rows) assert.match(r.cause, /0x0000/);
+  assert.match((await byTestId('last-change-dsp408').textContent()) ?? '', /TR_5, TR_6, TR_7/);
+  await shot('dsv-tr567', 'detail-section');
+  // And back: 0x0007 from INIT walks TR_2, TR_3, TR_4.
+  await byTestId('cw-preset-0x0007').click();
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=DEVICE_MODE_ACTIVE][data-current=true]');
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid=diagram-dsp408] .edge.last').length === 3);
+  assert.deepEqual(await marked(), ['TR_2', 'TR_3', 'TR_4']);
 });
 
 test('an SDO write the node refuses shows the abort code and its text', async () => {
@@ -268,6 +295,10 @@ test('a heartbeat consumer (exercise 3): the link dropped, EMCY 8130h decoded, t
   await page.waitForFunction(() => (parseInt((document.querySelector('[data-testid=errreg-wdga]')?.textContent ?? '0x0').slice(2), 16) & 0x10) !== 0);
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=EMCY] td.decoded')]
     .some((td) => /8130/.test(td.textContent ?? '')));
+  // The WDGA's own reaction (1029h:01 = 0): OPERATIONAL → PRE-OPERATIONAL, the missed heartbeat as cause.
+  await byTestId('node-row-wdga').click();
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=transition-list] tbody tr[data-machine=nmt]')]
+    .some((tr) => /OPERATIONAL → PRE-OPERATIONAL/.test(tr.textContent ?? '') && /heartbeat/i.test(tr.querySelector('td.cause')?.textContent ?? '')));
   await shot('heartbeat-consumer-fault', 'trace-section');
   // Recover: the next heartbeat reaches the WDGA, which sends the error reset.
   await page.locator('[data-testid^=fault-clear-]').first().click();
@@ -370,6 +401,11 @@ test('an SDO to a STOPPED node says timeout, not refused', async () => {
   await byTestId('nmt-target').selectOption('dsv');
   await byTestId('nmt-stop').click();
   await page.waitForFunction(() => document.querySelector('[data-testid=nmt-dsv]')?.textContent === 'STOPPED');
+  // NMT Stop in DEVICE_MODE_ACTIVE: TR_8, TR_12 to FAULT, caused by the NMT command, not by a control word.
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=FAULT][data-current=true]');
+  await page.waitForFunction(() => /TR_8, TR_12/.test(document.querySelector('[data-testid=last-change-dsp408]')?.textContent ?? ''));
+  assert.doesNotMatch((await byTestId('last-change-dsp408').textContent()) ?? '', /control word/);
+  await shot('dsv-nmt-stop', 'detail-section');
   await byTestId('od-filter').fill('1000');
   await byTestId('od-read-1000-00').click();
   await page.waitForFunction(() => /timeout/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
@@ -378,6 +414,25 @@ test('an SDO to a STOPPED node says timeout, not refused', async () => {
   await byTestId('nmt-start').click();
   await page.waitForFunction(() => document.querySelector('[data-testid=nmt-dsv]')?.textContent === 'OPERATIONAL');
   await byTestId('nmt-target').selectOption('');
+});
+
+test('Restart brings every node back to its boot-up', async () => {
+  autoResume = false;
+  await byTestId('restart').click();
+  await page.waitForFunction(() => /restarted/.test(document.querySelector('[data-testid=messages]')?.textContent ?? ''));
+  if ((await byTestId('clock-state').textContent()) === 'paused') await byTestId('clock-resume').click();
+  for (const name of ['vtvpcd', 'dsv', 'md2', 'hlt', 'wdga']) {
+    await page.waitForFunction((n) => document.querySelector(`[data-testid=nmt-${n}]`)?.textContent === 'PRE-OPERATIONAL', name);
+  }
+  const t = await page.evaluate(async () => (await (await fetch('/api/clock')).json()).t_us as number);
+  assert.ok(t < 5_000_000, `the clock started again: ${t}`);
+  // Every node's boot-up (700h + ID, data 00) is in the trace again.
+  await page.waitForFunction(() => {
+    const ids = [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=HEARTBEAT]')]
+      .filter((tr) => tr.querySelector('td:nth-child(7)')?.textContent === '00')
+      .map((tr) => tr.querySelector('td:nth-child(4)')?.textContent);
+    return ['77F', '702', '703', '705', '73F'].every((id) => ids.includes(id));
+  });
 });
 
 /** The panels shown (main's sections not hidden) as boxes in CSS pixels, and the page's extent. */

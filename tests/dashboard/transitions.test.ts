@@ -1,6 +1,6 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { currentState, latestChain, TransitionHistory } from '../../dashboard/src/transitions';
+import { currentStates, latestChain, TransitionHistory } from '../../dashboard/src/transitions';
 import type { Machine, Transition } from '../../dashboard/src/types';
 
 function tr(seq: number, t_us: number, machine: string, from: string, to: string, transition: string, cause = 'control_word', value = 0): Transition {
@@ -35,10 +35,13 @@ test('the same tick but another cause is another change', () => {
   assert.deepEqual(latestChain(h, 'dsp408').map((t) => t.transition), ['TR_8']);
 });
 
-test('the current state is the newest target, else what the server described', () => {
+test('the current state is the newest target, else what the server described; bit machines in every set bit', () => {
   const m: Machine = { machine: 'dsp408', title: '', state: 'NOT_READY', states: [], edges: [], note: '' };
-  assert.equal(currentState(m, dsv), 'INIT');
-  assert.equal(currentState({ ...m, machine: 'vtvpcd', state: 'RUNNING' }, dsv), 'RUNNING');
+  assert.deepEqual([...currentStates(m, dsv)], ['INIT']);
+  assert.deepEqual([...currentStates({ ...m, machine: 'vtvpcd', state: 'RUNNING' }, dsv)], ['RUNNING']);
+  const alarms: Machine = { ...m, machine: 'cia406.alarms', state: 'position error + magnet lost', bits: [{ bit: 0, name: 'position error' }, { bit: 1, name: 'magnet lost' }] };
+  assert.deepEqual([...currentStates(alarms, dsv)].sort(), ['magnet lost', 'position error']);
+  assert.deepEqual([...currentStates({ ...alarms, state: 'none' }, dsv)], ['none']);
 });
 
 test('the history merges overlapping fetches and stream events by seq, and keeps its bound', () => {

@@ -23,7 +23,7 @@ function boxExit(cx: number, cy: number, w: number, tx: number, ty: number): [nu
 
 export const edgeId = (e: Pick<MachineEdge, 'transition' | 'from' | 'to'>) => `${e.transition}:${e.from}->${e.to}`;
 
-export function renderMachine(m: Machine, current: string, chain: readonly Transition[]): SVGSVGElement {
+export function renderMachine(m: Machine, current: ReadonlySet<string>, chain: readonly Transition[]): SVGSVGElement {
   const rows = Math.max(1, ...m.states.map((s) => s.row + 1));
   const cols = Math.max(1, ...m.states.map((s) => s.col + 1));
   const width = cols * COL_W + 2 * MARGIN, height = rows * ROW_H + 2 * MARGIN - (ROW_H - BOX_H) / 2;
@@ -32,7 +32,7 @@ export function renderMachine(m: Machine, current: string, chain: readonly Trans
   const id = m.machine.replace(/[^a-z0-9]/gi, '-');
   const root = svg('svg', {
     viewBox: `0 0 ${width} ${height}`, class: 'diagram', role: 'img',
-    'aria-label': `${m.title}: current state ${current}`, 'data-testid': `diagram-${m.machine}`,
+    'aria-label': `${m.title}: current state ${[...current].join(' + ')}`, 'data-testid': `diagram-${m.machine}`,
     style: `max-width:${width * 1.15}px`,
   });
   root.append(svg('defs', {},
@@ -70,7 +70,7 @@ export function renderMachine(m: Machine, current: string, chain: readonly Trans
   root.append(edges, marked);  // the marked steps over the others
   for (const { x, y, s } of at.values()) {
     const w = boxWidth(s.name);
-    const isCurrent = s.name === current;
+    const isCurrent = current.has(s.name);
     root.append(svg('g', { class: `state kind-${s.kind}${isCurrent ? ' current' : ''}`, 'data-state': s.name, 'data-current': isCurrent ? 'true' : 'false' },
       svg('rect', { x: x - w / 2, y: y - BOX_H / 2, width: w, height: BOX_H, rx: 6 }),
       svg('text', { x, y: y + 4, 'text-anchor': 'middle' }, s.name)));

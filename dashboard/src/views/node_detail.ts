@@ -3,7 +3,7 @@
 // transition history, the change's cause in words beneath, the profile's note (how a latched
 // VT-VPCD fault is acknowledged, ...). The MD2's channels are chosen one at a time. Then the EMCY history.
 import { el, formatTime, hex, spacedHex } from '../dom';
-import { currentState, latestChain } from '../transitions';
+import { currentStates, latestChain } from '../transitions';
 import type { Machine, NodeInfo, NodeMachines, Transition } from '../types';
 import { renderMachine } from './machine_diagram';
 
@@ -53,13 +53,14 @@ export class NodeDetail {
   }
 
   private machineBox(m: Machine, history: readonly Transition[]): HTMLElement {
-    const current = currentState(m, history);
+    const current = currentStates(m, history);
+    const shown = [...current].join(' + ');
     const chain = latestChain(history, m.machine);
     const last = chain.length
       ? `${chain.map((t) => t.transition).join(', ')} (${chain[0].from} → ${chain[chain.length - 1].to}) at ${formatTime(chain[0].t_us)}: ${chain[chain.length - 1].evidence || chain[0].cause}`
-      : `no transition recorded; state ${current}`;
+      : `no transition recorded; state ${shown}`;
     return el('figure', { class: `diagram-box machine-${m.machine.split('.')[0]}`, 'data-machine': m.machine },
-      el('figcaption', { class: 'machine-title' }, el('strong', {}, m.title || m.machine), ` — ${current}`),
+      el('figcaption', { class: 'machine-title' }, el('strong', {}, m.title || m.machine), ` — ${shown}`),
       renderMachine(m, current, chain),
       el('figcaption', { 'data-testid': `last-change-${m.machine}`, class: 'last-change' }, last),
       m.note ? el('p', { class: 'machine-note', 'data-testid': `note-${m.machine}` }, m.note) : null);
