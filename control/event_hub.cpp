@@ -199,10 +199,16 @@ void EventHub::batch() {
     append_event(transitions, "transition", j.dump());
   }
 
+  // A restart (POST /api/restart): the page drops what it drew of the old run.
+  const auto restarts = bridge_.restarts();
+  const bool restarted = restarts != restarts_seen_;
+  restarts_seen_ = restarts;
+
   const auto& names = bridge_.signals();
   for (std::size_t i = 0; i < clients.size(); ++i) {
     auto& c = *clients[i];
     std::string out;
+    if (restarted && c.greeted_) append_event(out, "restart", nlohmann::json{{"restarts", restarts}, {"t_us", clock.t_us}}.dump());
     if (!c.greeted_ || nodes_changed) append_event(out, "nodes", nodes_event_);
     if (!c.greeted_ || clock_changed) append_event(out, "clock", clock_event);
     c.greeted_ = true;

@@ -78,6 +78,7 @@ class EventHub {
 
   // Hub thread state.
   std::uint64_t node_version_ = ~0ULL, pdo_version_ = ~0ULL, dropped_seen_ = 0;
+  std::uint64_t restarts_seen_ = 0;
   std::vector<NodeStatus> nodes_;
   std::vector<CapturedFrame> captured_;  ///< one batch's frames (sized to the ring once)
   std::vector<std::vector<PdoMap>> maps_;

@@ -1,5 +1,5 @@
 // The control-plane API (docs/api.md) as typed calls. Every call goes to the page's own origin.
-import type { ActiveFault, ClockState, FindingsPage, Frame, NodeInfo, OdEntry, Scenario, SdoResult, SignalBatch } from './types';
+import type { ActiveFault, ClockState, FindingsPage, Frame, NodeInfo, NodeMachines, OdEntry, Pdo, Scenario, SdoResult, SignalBatch, Transition } from './types';
 
 export class ApiError extends Error {
   constructor(readonly status: number, message: string) {
@@ -44,6 +44,16 @@ export const api = {
   findings: (since: number) => call<FindingsPage>('GET', `/api/findings?since=${since}`),
   clockAction: (action: string, ms?: number) =>
     call<ClockState | { ok: boolean }>('POST', '/api/clock', ms === undefined ? { action } : { action, ms }),
+  resume: (speed: number) => call<ClockState | { ok: boolean }>('POST', '/api/clock', { action: 'resume', speed }),
+  transitions: (node: string, after?: number) =>
+    call<Transition[]>('GET', `/api/nodes/${encodeURIComponent(node)}/transitions${after === undefined || after < 0 ? '' : `?after=${after}`}`),
+  machines: (node: string) => call<NodeMachines>('GET', `/api/nodes/${encodeURIComponent(node)}/machines`),
+  pdos: (node: string) => call<Pdo[]>('GET', `/api/nodes/${encodeURIComponent(node)}/pdos`),
+  rpdo: (node: string, pdo: number, values: Record<string, number>) =>
+    call<{ ok: boolean }>('POST', `/api/nodes/${encodeURIComponent(node)}/rpdo`, { pdo, values }),
+  sync: () => call<{ period_ms: number }>('GET', '/api/sync'),
+  setSync: (periodMs: number) => call<{ ok: boolean }>('POST', '/api/sync', { period_ms: periodMs }),
+  restart: () => call<{ ok: boolean }>('POST', '/api/restart'),
 };
 
 export interface StreamHandlers {
@@ -52,6 +62,9 @@ export interface StreamHandlers {
   signals(batch: SignalBatch): void;
   clock(c: { t_us: number; paused: boolean; end_reached?: boolean }): void;
   dropped(d: { frames: number }): void;
+  transition(t: Transition & { node: string }): void;
+  /** POST /api/restart by anyone: the run starts again at t = 0. */
+  restart(): void;
   connection(open: boolean): void;
 }
 
@@ -66,6 +79,8 @@ export function openStream(signals: readonly string[], rateHz: number, h: Stream
   on('signals', h.signals);
   on('clock', h.clock);
   on('dropped', h.dropped);
+  on('transition', h.transition);
+  on('restart', h.restart);
   es.onopen = () => h.connection(true);
   es.onerror = () => h.connection(false);
   return es;

@@ -34,3 +34,8 @@ export function hex(n: number, width: number): string {
 export function formatTime(t_us: number): string {
   return (t_us / 1e6).toFixed(3) + ' s';
 }
+
+/** "0A 1B 2C": hex bytes spaced as a trainee counts them. */
+export function spacedHex(data: string): string {
+  return (data.match(/../g) ?? []).join(' ');
+}

@@ -1,20 +1,24 @@
-// The dashboard: loads the scenario, opens the live stream, and wires the views to the API.
+// The dashboard: loads the scenario into the store, opens the one live stream, and wires each view
+// to the store topics it draws and to the API calls it makes.
 import 'uplot/dist/uPlot.min.css';
 import './style.css';
 import { api, ApiError, openStream } from './api';
 import { el } from './dom';
 import { formatIndex, sdoWriteBody } from './od_input';
-import type { NodeInfo, OdEntry, Scenario } from './types';
+import { defaultSignals } from './signal_choice';
+import { Store } from './store';
+import type { OdEntry, SdoResult } from './types';
 import { ClockControls, renderNmtControls } from './views/controls';
 import { FaultsPanel } from './views/faults_panel';
 import { FindingsView } from './views/findings_view';
-import { renderControlWordControls, renderNodeDetail } from './views/node_detail';
+import { renderControlWord, PdoPanel, SyncControls } from './views/node_controls';
+import { NodeDetail } from './views/node_detail';
 import { NodeTable } from './views/node_table';
 import { OdBrowser } from './views/od_browser';
-import { defaultSignals } from './signal_choice';
 import { Plots } from './views/plots';
 import { TraceView } from './views/trace_view';
 import { mountExerciseView } from './views/exercise_view';
+import { TransitionList } from './views/transition_list';
 
 const $ = (id: string) => document.getElementById(id) as HTMLElement;
 
@@ -28,100 +32,161 @@ function errorText(e: unknown): string {
   return e instanceof ApiError ? e.message : String(e);
 }
 
+/** An SDO that went wrong, in words: the node's abort, or no answer at all (a timeout is no refusal). */
+export function sdoFailure(what: string, r: SdoResult): string {
+  if (r.abort_code?.toLowerCase() === '0x05040000') return `${what}: timeout, the node did not answer (SDO protocol timed out, abort 0x05040000)`;
+  return `${what} refused by the node: abort ${r.abort_code} ${r.abort_text}`;
+}
+
 async function main(): Promise<void> {
-  const sc: Scenario = await api.scenario();
-  const clock = await api.clock();
+  const store = new Store(await api.scenario(), await api.clock());
+  const sc = store.scenario;
   document.title = `vplant: ${sc.name}`;
   $('scenario-name').textContent = sc.name;
   $('scenario-description').textContent = sc.description;
+  const nodeOf = (name: string | null) => sc.nodes.find((n) => n.name === name);
 
-  const live = new Map<string, NodeInfo>();
-  const nmtLast = new Map<string, { from: string; to: string }>();
-  // The device state seen before the latest change: one control word can walk several transitions
-  // between two updates (0x0007 from INIT: TR_2, TR_3, TR_4), and the diagram marks them all.
-  const deviceLast = new Map<string, { from: string; to: string }>();
-  let selected: string | null = sc.nodes.find((n) => n.profile === 'dsp408')?.name ?? sc.nodes[0]?.name ?? null;
+  // --- the object dictionary -------------------------------------------------------------------
   let odNode: string | null = null;
-
   const od = new OdBrowser($('od'), {
     write: async (e: OdEntry, text: string) => {
-      if (!selected) return;
+      if (!store.selected) return;
       const body = sdoWriteBody(e.index, e.sub, e.type, text);
       if ('error' in body) return od.report(false, body.error);
-      await sdoWrite(selected, body, `${formatIndex(e.index, e.sub)} ${e.name}`);
+      await sdoWrite(store.selected, body, `${formatIndex(e.index, e.sub)} ${e.name}`);
     },
     read: async (e: OdEntry) => {
-      if (!selected) return;
+      if (!store.selected) return;
+      const what = `SDO upload ${formatIndex(e.index, e.sub)} ${e.name}`;
       try {
-        const r = await api.sdoRead(selected, e.index, e.sub);
-        if (r.ok) od.report(true, `SDO upload ${formatIndex(e.index, e.sub)} ${e.name}: ${r.value ?? ''} (data ${r.data})`);
-        else od.report(false, `SDO upload ${formatIndex(e.index, e.sub)} refused: abort ${r.abort_code} ${r.abort_text}`);
+        const r = await api.sdoRead(store.selected, e.index, e.sub);
+        if (r.ok) od.report(true, `${what}: ${r.value ?? ''} (data ${r.data})`);
+        else od.report(false, sdoFailure(what, r));
       } catch (err) {
-        od.report(false, errorText(err));
+        od.report(false, err instanceof ApiError && err.status === 504 ? `${what}: timeout, the node did not answer` : errorText(err));
       }
     },
   });
 
   async function sdoWrite(node: string, body: object, what: string): Promise<void> {
+    const text = `SDO download ${what} on ${node}`;
     try {
       const r = await api.sdoWrite(node, body);
-      if (r.ok) od.report(true, `SDO download ${what} on ${node}: done`);
-      else od.report(false, `SDO download ${what} on ${node} refused: abort ${r.abort_code} ${r.abort_text}`);
+      if (r.ok) od.report(true, `${text}: done`);
+      else od.report(false, sdoFailure(text, r));
       void refreshOd();
     } catch (err) {
-      od.report(false, errorText(err));
+      od.report(false, err instanceof ApiError && err.status === 504 ? `${text}: timeout, the node did not answer` : errorText(err));
     }
   }
 
   async function refreshOd(): Promise<void> {
-    if (!selected) return;
-    const node = selected;
+    const node = store.selected;
+    if (!node) return;
     try {
       const entries = await api.od(node);
-      if (node !== selected) return;
-      if (odNode !== node) {
-        od.show(entries);
-        odNode = node;
-      } else {
-        od.update(entries);
-      }
+      if (node !== store.selected) return;
+      if (odNode !== node) od.show(entries);
+      else od.update(entries);
+      odNode = node;
     } catch (err) {
       message(errorText(err));
     }
   }
 
-  const detailActions = {
-    writeControlWord: (node: string, cw: number) => void sdoWrite(node, { index: 0x6040, sub: 0, value: cw }, `6040:00 control word = 0x${cw.toString(16).toUpperCase().padStart(4, '0')}`),
-    reportError: (m: string) => od.report(false, m),
+  // --- the selected node: machines, transitions, controls, PDOs ---------------------------------
+  const unavailable = new Map<string, string>();  // what the server could not give, in words
+  const detail = new NodeDetail($('node-detail'), () => drawDetail());
+  const transitions = new TransitionList($('transitions'));
+  function drawDetail(): void {
+    const node = store.selected;
+    const history = node ? store.history(node).all() : [];
+    detail.render(node ? store.live.get(node) : undefined, node ? store.machines.get(node) : undefined, history, unavailable.get('machines') ?? null);
+    transitions.show(history, unavailable.get('transitions') ?? null);
+  }
+  store.on('transitions', drawDetail);
+  store.on('machines', drawDetail);
+
+  async function loadMachines(node: string): Promise<void> {
+    try {
+      store.setMachines(await api.machines(node));
+      unavailable.delete('machines');
+    } catch (err) {
+      unavailable.set('machines', `The server does not describe its state machines (${errorText(err)}).`);
+      drawDetail();
+    }
+  }
+
+  let machinesTimer: ReturnType<typeof setTimeout> | undefined;
+  function machinesSoon(node: string): void {
+    clearTimeout(machinesTimer);
+    machinesTimer = setTimeout(() => { if (node === store.selected) void loadMachines(node); }, 150);
+  }
+
+  async function loadTransitions(node: string, after?: number): Promise<void> {
+    try {
+      store.addTransitions(node, await api.transitions(node, after));
+      unavailable.delete('transitions');
+    } catch (err) {
+      unavailable.set('transitions', `The server keeps no transition history (${errorText(err)}).`);
+      drawDetail();
+    }
+  }
+
+  const pdoPanel = new PdoPanel($('pdos'), {
+    sendRpdo: (node, pdo, values) => void sendRpdo(node, pdo, values),
+    reportError: (m) => message(m),
+  });
+  async function loadPdos(node: string): Promise<void> {
+    try {
+      const pdos = await api.pdos(node);
+      if (node === store.selected) pdoPanel.show(node, pdos);
+    } catch (err) {
+      pdoPanel.unavailable(`The server does not decode the PDO mapping (${errorText(err)}).`);
+    }
+  }
+  async function sendRpdo(node: string, pdo: number, values: Record<string, number>): Promise<void> {
+    try {
+      await api.rpdo(node, pdo, values);
+      message(`RPDO${pdo} sent to ${node}: ${Object.entries(values).map(([k, v]) => `${k} = ${v}`).join(', ')}`, true);
+    } catch (err) {
+      message(errorText(err));
+    }
+  }
+
+  const controlActions = {
+    writeControlWord: (node: string, cw: number) =>
+      void sdoWrite(node, { index: 0x6040, sub: 0, value: cw }, `6040:00 control word = 0x${cw.toString(16).toUpperCase().padStart(4, '0')}`),
+    sendRpdo: (node: string, pdo: number, values: Record<string, number>) => void sendRpdo(node, pdo, values),
+    reportError: (m: string) => message(m),
   };
 
-  const nodeTable = new NodeTable($('node-table'), sc.nodes, (name) => select(name));
-  function renderNodes(): void {
-    nodeTable.update(live, selected);
-    renderNodeDetail($('node-detail'), selected ? live.get(selected) : undefined,
-      selected ? nmtLast.get(selected) ?? null : null, selected ? deviceLast.get(selected) ?? null : null);
-  }
+  const nodeChoice = el('select', { 'aria-label': 'Selected node', 'data-testid': 'node-choice' },
+    ...sc.nodes.map((n) => el('option', { value: n.name }, `${n.name} (${n.node_id})`)));
+  nodeChoice.addEventListener('change', () => store.select(nodeChoice.value));
+  $('node-choice').replaceChildren(el('label', { class: 'node-choice' }, 'Node ', nodeChoice));
 
-  function select(name: string): void {
-    if (name === selected) return;
-    selected = name;
-    $('od-node').textContent = name;
-    renderControlWordControls($('cw-controls'), name, sc.nodes.find((n) => n.name === name)?.profile === 'dsp408', detailActions);
-    renderNodes();
+  const nodeTable = new NodeTable($('node-table'), sc.nodes, store.signals, (name) => store.select(name));
+  store.on('nodes', () => {
+    nodeTable.update(store.live, store.selected);
+    drawDetail();
+  });
+
+  function onSelected(): void {
+    const node = store.selected;
+    if (!node) return;
+    nodeChoice.value = node;
+    for (const s of document.querySelectorAll('.selected-node')) s.textContent = node;
+    renderControlWord($('cw-controls'), node, nodeOf(node)?.profile === 'dsp408', controlActions);
+    nodeTable.update(store.live, node);
+    if (lesson) trace.onlyNode(nodeOf(node)?.node_id ?? null);
+    drawDetail();
+    void loadMachines(node);
+    void loadTransitions(node);
+    void loadPdos(node);
     void refreshOd();
   }
-
-  function updateNodes(nodes: NodeInfo[]): void {
-    for (const n of nodes) {
-      const before = live.get(n.name);
-      if (before && before.nmt !== n.nmt) nmtLast.set(n.name, { from: before.nmt, to: n.nmt });
-      if (before?.device.profile === 'dsp408' && n.device.profile === 'dsp408' && before.device.state !== n.device.state) {
-        deviceLast.set(n.name, { from: before.device.state, to: n.device.state });
-      }
-      live.set(n.name, n);
-    }
-    renderNodes();
-  }
+  store.on('selected', onSelected);
 
   renderNmtControls($('nmt-controls'), sc.nodes, async (command, node) => {
     try {
@@ -130,18 +195,64 @@ async function main(): Promise<void> {
     } catch (err) {
       message(errorText(err));
     }
-  });
+  }, () => (lesson ? store.selected : null));
 
-  const clockControls = new ClockControls($('clock'), clock, async (action, ms) => {
+  // --- SYNC, clock, restart ----------------------------------------------------------------------
+  const sync = new SyncControls($('sync-controls'), async (periodMs) => {
     try {
-      await api.clockAction(action, ms);
-      const c = await api.clock();
-      clockControls.show(c.t_us, c.paused, c.end_reached ?? false);
+      await api.setSync(periodMs);
+      sync.show(periodMs);
+      message(periodMs > 0 ? `SYNC every ${periodMs} ms` : 'SYNC off', true);
     } catch (err) {
       message(errorText(err));
     }
   });
+  api.sync().then((s) => sync.show(s.period_ms), () => sync.show(null));
 
+  const clockAction = async (call: () => Promise<unknown>) => {
+    try {
+      await call();
+      const c = await api.clock();
+      store.setClock(c);
+    } catch (err) {
+      message(errorText(err));
+    }
+  };
+  const clockControls = new ClockControls($('clock'), store.clock, {
+    act: (action, ms) => void clockAction(() => api.clockAction(action, ms)),
+    resume: (speed) => void clockAction(() => api.resume(speed)),
+    restart: () => void restart(),
+  });
+  let lastT = store.clock.t_us;
+  store.on('clock', () => {
+    const c = store.clock;
+    if (c.t_us < lastT) afterRestart();  // restarted (here or by another viewer)
+    lastT = c.t_us;
+    clockControls.show(c.t_us, c.paused, c.end_reached ?? false);
+  });
+
+  function afterRestart(): void {
+    store.forgetHistory();
+    trace.buffer.clear();
+    if (store.selected) {
+      void loadMachines(store.selected);
+      void loadTransitions(store.selected);
+      void refreshOd();
+    }
+  }
+  async function restart(): Promise<void> {
+    try {
+      await api.restart();
+      lastT = 0;
+      afterRestart();
+      store.setClock(await api.clock());
+      message('restarted: the scenario runs again from t = 0', true);
+    } catch (err) {
+      message(errorText(err));
+    }
+  }
+
+  // --- faults, findings ----------------------------------------------------------------------------
   const faults = new FaultsPanel($('faults'), sc, {
     inject: async (f) => {
       try {
@@ -161,10 +272,10 @@ async function main(): Promise<void> {
       }
       void refreshFaults();
     },
-    setInput: async (node, name, value) => {
+    setInput: async (node, name, value, shown) => {
       try {
         await api.setInput(node, name, value);
-        message(`${node}.${name} = ${value}`, true);
+        message(`${node}.${name} = ${shown}`, true);
       } catch (err) {
         message(errorText(err));
       }
@@ -178,7 +289,6 @@ async function main(): Promise<void> {
       message(errorText(err));
     }
   }
-
   const findings = new FindingsView($('findings'));
   async function refreshFindings(): Promise<void> {
     try {
@@ -188,43 +298,74 @@ async function main(): Promise<void> {
     }
   }
 
+  // --- the stream ----------------------------------------------------------------------------------
   const trace = new TraceView($('trace'), sc.nodes);
   let stream: EventSource | null = null;
-  const signalNames = sc.signals.map((s) => s.name);
-  const plots = new Plots($('plots'), signalNames, defaultSignals(signalNames, sc.nodes.map((n) => n.name)), (chosen) => {
+  const plotDefault = defaultSignals([...store.signals.keys()], sc.nodes.map((n) => n.name));
+  const plots = new Plots($('plots'), store.signals, plotDefault, (chosen) => {
     plots.choose(chosen);
     connect(chosen);
   });
+  const readings = new Map<string, number>();
+  setInterval(() => nodeTable.showReadings((name) => readings.get(name)), 250);
 
-  function connect(signals: readonly string[]): void {
+  function connect(chosen: readonly string[]): void {
     stream?.close();
-    stream = openStream(signals, 20, {
+    stream = openStream([...new Set([...chosen, ...nodeTable.signalNames()])], 20, {
       frames: (batch) => trace.push(batch),
-      nodes: updateNodes,
-      signals: (b) => plots.append(b),
-      clock: (c) => clockControls.show(c.t_us, c.paused, c.end_reached ?? false),
+      nodes: (nodes) => store.setNodes(nodes),
+      signals: (b) => {
+        plots.append(b);
+        for (const [name, values] of Object.entries(b.values)) if (values.length) readings.set(name, values[values.length - 1]);
+      },
+      clock: (c) => store.setClock(c),
       dropped: (d) => trace.noteStreamDropped(d.frames),
+      transition: (t) => {
+        const h = store.history(t.node);
+        // the stream skips what did not fit: fill the gap from the node's history
+        if (t.node === store.selected && h.lastSeq >= 0 && t.seq > h.lastSeq + 1) void loadTransitions(t.node, h.lastSeq);
+        store.addTransitions(t.node, [t]);
+        if (t.node === store.selected) machinesSoon(t.node);  // bit machines' states, power
+      },
+      restart: () => afterRestart(),
       connection: (open) => {
         const s = $('connection');
         s.textContent = open ? 'live' : 'disconnected';
         s.dataset.open = String(open);
+        // after a reconnect, what the stream missed meanwhile
+        if (open && store.selected) void loadTransitions(store.selected);
       },
     });
   }
 
-  updateNodes(await api.nodes());
-  if (selected) {
-    const first = selected;
-    selected = null;
-    select(first);
+  // --- the lesson view: one node's diagram, controls, transitions and trace on one screen --------
+  let lesson = false;
+  const toggle = $('view-toggle');
+  function setLesson(on: boolean): void {
+    lesson = on;
+    document.body.classList.toggle('lesson', on);
+    toggle.textContent = on ? 'Full console' : 'Lesson view';
+    toggle.setAttribute('aria-pressed', String(on));
+    trace.onlyNode(on ? nodeOf(store.selected)?.node_id ?? null : null);
+    history.replaceState(null, '', on ? '#lesson' : location.pathname + location.search);
   }
+  toggle.addEventListener('click', () => setLesson(!lesson));
+  document.addEventListener('keydown', (ev) => {
+    const t = ev.target as HTMLElement | null;
+    if (ev.ctrlKey || ev.metaKey || ev.altKey || (t && /^(INPUT|SELECT|TEXTAREA)$/.test(t.tagName))) return;
+    if (ev.key === 'l' || ev.key === 'L') setLesson(!lesson);
+  });
+  if (location.hash === '#lesson') setLesson(true);
+
+  store.setNodes(await api.nodes());
+  onSelected();
   await refreshFaults();
-  connect(defaultSignals(signalNames, sc.nodes.map((n) => n.name)));
-  // Live values of the dictionary and the active faults: polled, they change rarely.
-  setInterval(() => void refreshOd(), 1000);
+  connect(plotDefault);
+  // Rare changes that have no stream event yet: the active faults, the verdict, the dictionary.
   setInterval(() => void refreshFaults(), 2000);
   setInterval(() => void refreshFindings(), 2000);
   mountExerciseView(document.querySelector('main') ?? document.body);
+  setInterval(() => { if (!lesson) void refreshOd(); }, 1000);
 }
 
 main().catch((e) => {

@@ -1,4 +1,5 @@
-// Which plant signals the plots show first, and how a reading is printed.
+// Which plant signals the plots show first (and the reading format the report shares, units.ts).
+export { formatReading } from './units';
 
 /** The signals shown by default: cylinder position, pressures, swivel angle, shaft speed, taken
  *  from the plant's ports (`component.port`), not from the nodes' ports (`node.port`). */
@@ -13,11 +14,4 @@ export function defaultSignals(all: readonly string[], nodeNames: readonly strin
     ...pick(/shaft[a-z_]*\.speed$/i, 1),
   ];
   return [...new Set(chosen)];
-}
-
-/** A reading for people: four significant digits, and no 1e-180 for what is zero. */
-export function formatReading(v: number): string {
-  if (Math.abs(v) < 1e-9) return '0';
-  const a = Math.abs(v);
-  return a >= 1e-3 && a < 1e6 ? String(Number(v.toPrecision(4))) : v.toExponential(3);
 }

@@ -2,21 +2,13 @@
 
 export type NmtState = 'INITIALISING' | 'PRE-OPERATIONAL' | 'OPERATIONAL' | 'STOPPED' | 'OFF';
 
-export interface Dsp408Transition { from: string; to: string; control_word: number; t_us: number }
 /** One channel of a multi-channel DSP 408 device (the MD2). */
-export interface Dsp408Channel {
-  channel: number;
-  state: string;
-  control_word: number;
-  status_word: number;
-  last_transition: Dsp408Transition | null;
-}
+export interface Dsp408Channel { channel: number; state: string; control_word: number; status_word: number }
 export interface Dsp408State {
   profile: 'dsp408';
   state: string;
   control_word: number;
   status_word: number;
-  last_transition: Dsp408Transition | null;
   /** The MD2: every channel (channel 1 is the fields above). */
   channels?: Dsp408Channel[];
 }
@@ -46,22 +38,13 @@ export interface ScenarioNode {
   profile: 'dsp408' | 'vtvpcd' | 'cia406' | 'generic';
 }
 
-/** A plant signal: values arrive in SI (`unit`); display = si × display_scale + display_offset. */
-export interface SignalMeta {
-  name: string;
-  unit: string;
-  display_unit: string;
-  display_scale: number;
-  display_offset: number;
-}
-
 export interface Scenario {
   name: string;
   description: string;
   clock: { mode: 'virtual' | 'realtime'; tick_us: number };
   buses: { name: string; wire: string; bitrate: number }[];
   nodes: ScenarioNode[];
-  signals: SignalMeta[];
+  signals: SignalInfo[];
   faults: {
     device: { node: string; name: string; description: string }[];
     wire: string[];
@@ -69,7 +52,7 @@ export interface Scenario {
     power: string[];
     plant: string[];
   };
-  inputs: ({ node: string } & SignalMeta)[];
+  inputs: ({ node: string } & SignalInfo)[];
 }
 
 export interface OdEntry {
@@ -80,6 +63,60 @@ export interface OdEntry {
   access: 'rw' | 'ro' | 'wo' | 'const';
   pdo_mappable: boolean;
   value: number | string | null;
+  /** Entries with a documented product scaling: the engineering unit and the value in it, as text. */
+  unit?: string;
+  display?: string;
+}
+
+/** A plant signal with its SI unit and how the page shows it: display = si × display_scale + display_offset. */
+export interface SignalInfo {
+  name: string;
+  unit: string;
+  display_unit: string;
+  display_scale: number;
+  display_offset: number;
+}
+
+/** One entry of a node's transition history (GET /api/nodes/{n}/transitions, the stream's `transition`). */
+export interface Transition {
+  seq: number;
+  t_us: number;
+  machine: string;
+  from: string;
+  to: string;
+  transition: string;
+  cause: string;
+  value: number;
+  detail: string;
+  evidence: string;
+}
+
+export interface MachineState { name: string; kind: 'normal' | 'fault' | 'off' | 'init'; row: number; col: number }
+export interface MachineEdge { transition: string; from: string; to: string; condition: string }
+/** A state machine as the C++ profile describes it (GET /api/nodes/{n}/machines). */
+export interface Machine {
+  machine: string;
+  title: string;
+  state: string;
+  states: MachineState[];
+  edges: MachineEdge[];
+  note: string;
+  /** Bit machines (cia406.*): the named bits; `state` is then the set bits' names joined by " + ", or "none". */
+  bits?: { bit: number; name: string }[];
+}
+export interface NodeMachines { node: string; powered: boolean; machines: Machine[] }
+
+/** A PDO as the node's communication and mapping parameters lay it out (GET /api/nodes/{n}/pdos). */
+export interface PdoEntry { object: string; name: string; bits: number; raw: string }
+export interface Pdo {
+  kind: 'rpdo' | 'tpdo';
+  number: number;
+  cob_id: number;
+  extended?: boolean;
+  valid: boolean;
+  /** null when the node has no transmission type entry for this PDO. */
+  transmission_type: number | null;
+  entries: PdoEntry[];
 }
 
 export interface SdoResult { ok: boolean; abort_code?: string; abort_text?: string; data?: string; value?: number }

@@ -14,7 +14,7 @@ import { createServer } from 'node:net';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { after, before, test } from 'node:test';
-import { BrowserContext, chromium, Page } from 'playwright-core';
+import { Browser, BrowserContext, chromium, Page } from 'playwright-core';
 
 function option(name: string): string | undefined {
   const i = process.argv.indexOf(name);
@@ -32,7 +32,7 @@ if (!vplant || !scenario || !screenshots) {
 const CHROMIUM = '/usr/bin/chromium';
 const WAIT_MS = 20_000;
 // Below ctest's TIMEOUT: a hung run still kills the server it started instead of leaving it behind.
-const WATCHDOG_MS = 150_000;
+const WATCHDOG_MS = 280_000;
 
 let server: ChildProcess | undefined;
 let serverLog = '';
@@ -171,6 +171,7 @@ test('NMT start from the page brings every node to OPERATIONAL', async () => {
   }
   await byTestId('node-row-dsv').click();
   await page.waitForSelector('[data-testid=diagram-nmt] [data-state=OPERATIONAL][data-current=true]');
+  await page.waitForSelector('[data-testid=transition-list] tbody tr[data-machine=nmt][data-transition="NMT 01h"]');
   // The trace decodes the NMT command the page sent.
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=NMT] td.decoded')]
     .some((td) => /start/i.test(td.textContent ?? '')));
@@ -178,17 +179,36 @@ test('NMT start from the page brings every node to OPERATIONAL', async () => {
 
 test('control word 0x0007 by SDO drives the DSV to DEVICE_MODE_ACTIVE', async () => {
   await byTestId('node-row-dsv').click();
-  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=INIT][data-current=true]');
   await byTestId('cw-preset-0x0007').click();
-  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=DEVICE_MODE_ACTIVE][data-current=true]');
-  assert.equal(await page.locator('[data-testid=diagram-dsp408] .state.current').count(), 1);
-  await page.waitForFunction(() => /→ DEVICE_MODE_ACTIVE.*0x0007/.test(document.querySelector('[data-testid=device-last-transition]')?.textContent ?? ''));
-  assert.ok(await page.locator('[data-testid=diagram-dsp408] .edge.last').count() >= 1, 'the last transition is drawn');
   await page.waitForFunction(() => /DEVICE_MODE_ACTIVE/.test(document.querySelector('[data-testid=device-dsv]')?.textContent ?? ''));
   // The SDO download and its response, decoded with the object's name.
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td.decoded')]
     .some((td) => /6040:00/.test(td.textContent ?? '') && /control ?word/i.test(td.textContent ?? '')));
   await shot('dsv-active', 'detail-section');
+});
+
+test('exercise 2 step 2: one write of 0x0000 from DEVICE_MODE_ACTIVE highlights TR_5, TR_6, TR_7, each on its own', async () => {
+  await byTestId('node-row-dsv').click();
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=DEVICE_MODE_ACTIVE][data-current=true]');
+  await byTestId('cw-preset-0x0000').click();
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=INIT][data-current=true]');
+  const marked = () => page.$$eval('[data-testid=diagram-dsp408] .edge.last', (es) =>
+    es.map((e) => ({ step: Number(e.getAttribute('data-step')), tr: e.getAttribute('data-transition') })).sort((a, b) => a.step - b.step).map((e) => e.tr));
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid=diagram-dsp408] .edge.last').length === 3);
+  assert.deepEqual(await marked(), ['TR_5', 'TR_6', 'TR_7']);
+  assert.equal(await page.locator('[data-testid=diagram-dsp408] .state.current').count(), 1);
+  // The transition list: three rows of the same write, newest first, the control word as cause.
+  const rows = await page.locator('[data-testid=transition-list] tbody tr[data-machine=dsp408]').evaluateAll((trs) =>
+    trs.slice(0, 3).map((tr) => ({ tr: tr.getAttribute('data-transition'), cause: tr.querySelector('td.cause')?.textContent ?? '' })));
+  assert.deepEqual(rows.map((r) => r.tr), ['TR_7', 'TR_6', 'TR_5']);
+  for (const r of rows) assert.match(r.cause, /0x0000/);
+  assert.match((await byTestId('last-change-dsp408').textContent()) ?? '', /TR_5, TR_6, TR_7/);
+  await shot('dsv-tr567', 'detail-section');
+  // And back: 0x0007 from INIT walks TR_2, TR_3, TR_4.
+  await byTestId('cw-preset-0x0007').click();
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=DEVICE_MODE_ACTIVE][data-current=true]');
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid=diagram-dsp408] .edge.last').length === 3);
+  assert.deepEqual(await marked(), ['TR_2', 'TR_3', 'TR_4']);
 });
 
 test('an SDO write the node refuses shows the abort code and its text', async () => {
@@ -198,13 +218,13 @@ test('an SDO write the node refuses shows the abort code and its text', async ()
   await byTestId('od-filter').fill('6300');
   await byTestId('od-input-6300-01').fill('20000');
   await byTestId('od-write-6300-01').click();
-  await page.waitForFunction(() => /refused: abort 0x0609003[0-2] \S/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
+  await page.waitForFunction(() => /refused by the node: abort 0x0609003[0-2] \S/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td.decoded')]
     .some((td) => /abort/i.test(td.textContent ?? '') && /0609003[0-2]/.test(td.textContent ?? '')));
   await byTestId('od-filter').fill('');
 });
 
-test('the cylinder plot rises when the pump delivers and the DSV opens', async () => {
+test('the cylinder plot rises when the pump delivers and the DSV opens; plots and node table read in bar and mm', async () => {
   const position = () => page.evaluate(() => {
     const el = document.querySelector('[data-testid="plot-value-cyl.position"]');
     const m = (el?.textContent ?? '').match(/= (-?[\d.e+-]+)/);
@@ -226,9 +246,14 @@ test('the cylinder plot rises when the pump delivers and the DSV opens', async (
   await page.waitForFunction(() => /6300:01.*done/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
   await page.waitForFunction((s) => {
     const m = (document.querySelector('[data-testid="plot-value-cyl.position"]')?.textContent ?? '').match(/= (-?[\d.e+-]+)/);
-    return m !== null && Number(m[1]) > s + 0.05;
+    return m !== null && Number(m[1]) > s + 50;  // mm
   }, start, { timeout: 30_000 });
   await byTestId('od-filter').fill('');
+  // Display units: the plots and the node table in bar and mm, never raw SI or e-notation.
+  assert.match((await byTestId('plot-value-cyl.position').textContent()) ?? '', /^= -?\d+(\.\d+)? mm$/);
+  assert.match((await byTestId('plot-value-p_supply.pressure').textContent()) ?? '', /^= -?\d+(\.\d+)? bar$/);
+  await page.waitForFunction(() => /position -?\d+(\.\d+)? mm/.test(document.querySelector('[data-testid=values-hlt]')?.textContent ?? ''));
+  await page.waitForFunction(() => /pressure_a -?\d+(\.\d+)? bar/.test(document.querySelector('[data-testid=values-vtvpcd]')?.textContent ?? ''));
   await shot('cylinder-rising', 'plots-section');
 });
 
@@ -270,6 +295,10 @@ test('a heartbeat consumer (exercise 3): the link dropped, EMCY 8130h decoded, t
   await page.waitForFunction(() => (parseInt((document.querySelector('[data-testid=errreg-wdga]')?.textContent ?? '0x0').slice(2), 16) & 0x10) !== 0);
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=EMCY] td.decoded')]
     .some((td) => /8130/.test(td.textContent ?? '')));
+  // The WDGA's own reaction (1029h:01 = 0): OPERATIONAL → PRE-OPERATIONAL, the missed heartbeat as cause.
+  await byTestId('node-row-wdga').click();
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=transition-list] tbody tr[data-machine=nmt]')]
+    .some((tr) => /OPERATIONAL → PRE-OPERATIONAL/.test(tr.textContent ?? '') && /heartbeat/i.test(tr.querySelector('td.cause')?.textContent ?? '')));
   await shot('heartbeat-consumer-fault', 'trace-section');
   // Recover: the next heartbeat reaches the WDGA, which sends the error reset.
   await page.locator('[data-testid^=fault-clear-]').first().click();
@@ -319,4 +348,124 @@ test('virtual time under the trainer: pause, one tick, run 100 ms, resume', asyn
   await byTestId('clock-resume').click();
   await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
   assert.deepEqual(pageErrors, []);
+});
+
+test('the SYNC producer and an RPDO by mapped values move the cylinder', async () => {
+  if ((await byTestId('clock-state').textContent()) === 'paused') await byTestId('clock-resume').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
+  // SYNC every 10 ms: the HLT 1100's synchronous TPDO2 (285h) answers it.
+  await byTestId('sync-period').fill('10');
+  await byTestId('sync-on').click();
+  await page.waitForFunction(() => /on, 10 ms/.test(document.querySelector('[data-testid=sync-state]')?.textContent ?? ''));
+  await page.waitForFunction(() => document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=SYNC]').length > 0);
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr td:nth-child(4)')].some((td) => td.textContent === '285'));
+  // The DSV's RPDO1 as its mapping (1600h) lays it out: 6040:00 control word, 6300:01 set point.
+  await byTestId('node-row-dsv').click();
+  await byTestId('pdo-rpdo-1').waitFor();
+  assert.match((await byTestId('pdo-rpdo-1').textContent()) ?? '', /0x60400010 → 6040:00 .*16 bit/);
+  const reading = () => Number((document.querySelector('[data-testid="plot-value-cyl.position"]')?.textContent ?? '').match(/= (-?[\d.]+) mm/)?.[1]);
+  const start = await page.evaluate(reading);
+  assert.ok(Number.isFinite(start));
+  await byTestId('rpdo-1-6040-00').fill('7');
+  await byTestId('rpdo-1-6300-01').fill('-8192');  // 50 % the other way: the cylinder retracts
+  await byTestId('rpdo-send-1').click();
+  await page.waitForFunction(() => /RPDO1 sent to dsv/.test(document.querySelector('[data-testid=messages]')?.textContent ?? ''));
+  // The DSV answers its RPDO1 at once with its TPDO1 (182h, the status word).
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=TPDO1] td:nth-child(4)')].some((td) => td.textContent === '182'));
+  await page.waitForFunction((s) => {
+    const m = (document.querySelector('[data-testid="plot-value-cyl.position"]')?.textContent ?? '').match(/= (-?[\d.]+) mm/);
+    return m !== null && Number(m[1]) < s - 50;
+  }, start, { timeout: 30_000 });
+  await shot('sync-rpdo', 'pdo-section');
+  await byTestId('sync-off').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=sync-state]')?.textContent === 'off');
+});
+
+test('an SDO to a STOPPED node says timeout, not refused', async () => {
+  if ((await byTestId('clock-state').textContent()) === 'paused') await byTestId('clock-resume').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
+  await byTestId('node-row-dsv').click();
+  await byTestId('nmt-target').selectOption('dsv');
+  await byTestId('nmt-stop').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=nmt-dsv]')?.textContent === 'STOPPED');
+  // NMT Stop in DEVICE_MODE_ACTIVE: TR_8, TR_12 to FAULT, caused by the NMT command, not by a control word.
+  await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=FAULT][data-current=true]');
+  await page.waitForFunction(() => /TR_8, TR_12/.test(document.querySelector('[data-testid=last-change-dsp408]')?.textContent ?? ''));
+  assert.doesNotMatch((await byTestId('last-change-dsp408').textContent()) ?? '', /control word/);
+  await shot('dsv-nmt-stop', 'detail-section');
+  await byTestId('od-filter').fill('1000');
+  await byTestId('od-read-1000-00').click();
+  await page.waitForFunction(() => /timeout/.test(document.querySelector('[data-testid=od-result]')?.textContent ?? ''));
+  assert.doesNotMatch((await byTestId('od-result').textContent()) ?? '', /refused/);
+  await byTestId('od-filter').fill('');
+  await byTestId('nmt-start').click();
+  await page.waitForFunction(() => document.querySelector('[data-testid=nmt-dsv]')?.textContent === 'OPERATIONAL');
+  await byTestId('nmt-target').selectOption('');
+});
+
+/** The panels shown (main's sections not hidden) as boxes in CSS pixels, and the page's extent. */
+async function panelBoxes(p: Page) {
+  return p.evaluate(() => ({
+    boxes: [...document.querySelectorAll('main > section')].filter((s) => getComputedStyle(s).display !== 'none').map((s) => {
+      const r = s.getBoundingClientRect();
+      return { id: s.id, x: r.x, y: r.y + window.scrollY, w: r.width, h: r.height };
+    }),
+    header: document.querySelector('header')!.getBoundingClientRect().bottom,
+    innerWidth: window.innerWidth, innerHeight: window.innerHeight,
+    scrollWidth: document.documentElement.scrollWidth, scrollHeight: document.documentElement.scrollHeight,
+  }));
+}
+
+type Box = { id: string; x: number; y: number; w: number; h: number };
+function overlaps(a: Box, b: Box): boolean {
+  const dx = Math.min(a.x + a.w, b.x + b.w) - Math.max(a.x, b.x);
+  const dy = Math.min(a.y + a.h, b.y + b.h) - Math.max(a.y, b.y);
+  return dx > 1 && dy > 1;
+}
+
+test('no panel overlaps another at 1366×768 and 1920×1080, 100 % and 150 %; the lesson view fits one screen', async () => {
+  const url = page.url().replace(/#.*$/, '');
+  await byTestId('node-row-dsv').click();
+  const browser: Browser = await chromium.launch({ executablePath: CHROMIUM, args: ['--headless', '--no-sandbox', '--disable-gpu'] });
+  try {
+    for (const [w, h] of [[1366, 768], [1920, 1080]]) {
+      for (const zoom of [1, 1.5]) {
+        for (const lesson of [false, true]) {
+          // 150 % zoom: the CSS viewport shrinks by the factor, each CSS pixel is 1.5 device pixels.
+          const ctx = await browser.newContext({ viewport: { width: Math.round(w / zoom), height: Math.round(h / zoom) }, deviceScaleFactor: zoom });
+          const p = await ctx.newPage();
+          const errors: string[] = [];
+          p.on('pageerror', (e) => errors.push(e.message));
+          await p.goto(url + (lesson ? '#lesson' : ''));
+          await p.getByTestId('node-row-dsv').waitFor({ state: 'attached' });
+          await p.waitForFunction(() => document.querySelector('[data-testid=connection]')?.textContent === 'live');
+          await p.waitForTimeout(800);  // plots drawn, the trace rendered
+          const name = `layout-${w}x${h}-${zoom * 100}${lesson ? '-lesson' : ''}`;
+          await p.screenshot({ path: join(screenshots!, `${name}.png`) });
+          if (docsImages && name === 'layout-1366x768-150-lesson') copyFileSync(join(screenshots!, `${name}.png`), join(docsImages, 'dashboard-lesson.png'));
+          const L = await panelBoxes(p);
+          for (let i = 0; i < L.boxes.length; ++i) {
+            for (let j = i + 1; j < L.boxes.length; ++j) {
+              assert.ok(!overlaps(L.boxes[i], L.boxes[j]), `${name}: ${L.boxes[i].id} overlaps ${L.boxes[j].id}: ${JSON.stringify([L.boxes[i], L.boxes[j]])}`);
+            }
+          }
+          assert.ok(L.scrollWidth <= L.innerWidth + 1, `${name}: the page is wider than the window (${L.scrollWidth} > ${L.innerWidth})`);
+          if (lesson) {
+            assert.deepEqual(L.boxes.map((b) => b.id).sort(), ['controls-section', 'detail-section', 'trace-section', 'transitions-section']);
+            assert.ok(L.scrollHeight <= L.innerHeight + 1, `${name}: the lesson view scrolls (${L.scrollHeight} > ${L.innerHeight})`);
+            for (const b of L.boxes) {
+              assert.ok(b.y >= L.header - 1 && b.y + b.h <= L.innerHeight + 1 && b.h >= 60, `${name}: ${b.id} is not on the screen: ${JSON.stringify(b)}`);
+            }
+            // large type for a projector
+            const px = await p.evaluate(() => parseFloat(getComputedStyle(document.querySelector('[data-testid=transition-list]')!).fontSize));
+            assert.ok(px >= 15, `${name}: transition list in ${px} px`);
+          }
+          assert.deepEqual(errors, []);
+          await ctx.close();
+        }
+      }
+    }
+  } finally {
+    await browser.close();
+  }
 });

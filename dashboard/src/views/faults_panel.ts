@@ -3,11 +3,13 @@
 import { button, el, formatTime } from '../dom';
 import { busOffFault, deviceFault, plantFault, powerFault, wireFault } from '../fault_requests';
 import type { ActiveFault, Scenario } from '../types';
+import { fromDisplay, unitLabel } from '../units';
 
 export interface FaultActions {
   inject(fault: object): void;
   clear(id: number): void;
-  setInput(node: string, name: string, value: number): void;
+  /** `value` in SI; `shown` as typed, with its display unit. */
+  setInput(node: string, name: string, value: number, shown: string): void;
   reportError(message: string): void;
 }
 
@@ -68,11 +70,12 @@ export class FaultsPanel {
       for (const i of sc.inputs) {
         const id = `${i.node}-${i.name}`;
         const value = el('input', { type: 'number', step: 'any', size: 6, value: '1', 'aria-label': `Value for ${i.node}.${i.name}`, 'data-testid': `input-value-${id}` });
-        inputs.append(el('tr', {}, el('td', {}, i.node), el('td', { class: 'mono' }, i.name), el('td', {}, value, i.unit ? ` ${i.unit}` : ''),
+        const u = unitLabel(i);
+        inputs.append(el('tr', {}, el('td', {}, i.node), el('td', { class: 'mono' }, i.name), el('td', {}, value, u ? ` ${u}` : ''),
           el('td', {}, button('Set', { 'data-testid': `input-set-${id}`, 'aria-label': `Set ${i.node}.${i.name}` }, () => {
             const v = Number(value.value);
             if (value.value.trim() === '' || !Number.isFinite(v)) actions.reportError(`${i.node}.${i.name}: give a number`);
-            else actions.setInput(i.node, i.name, v);
+            else actions.setInput(i.node, i.name, fromDisplay(v, i), `${v}${u ? ` ${u}` : ''}`);  // typed in the display unit, sent in SI
           }))));
       }
       parts.push(el('div', { class: 'fault-scroll' }, inputs));

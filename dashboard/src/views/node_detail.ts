@@ -1,80 +1,68 @@
-// The selected node: its NMT diagram, for DSP 408 valves the device control diagram with the last
-// transition and the control word that caused it, control-word buttons, and the EMCY history.
-import { CW_PRESETS, describeControlWord } from '../control_word';
-import { button, el, formatTime, hex } from '../dom';
-import { channelLine, channelsOf } from '../dsp408_channels';
-import { DSP408_DIAGRAM, markedTransition, NMT_DIAGRAM } from '../state_diagrams';
-import type { NodeInfo } from '../types';
-import { renderDiagram } from './diagram_view';
+// The selected node's state machines as its C++ profile describes them (GET .../machines): each
+// drawn from the description, the current state and the steps of the latest change from the
+// transition history, the change's cause in words beneath, the profile's note (how a latched
+// VT-VPCD fault is acknowledged, ...). The MD2's channels are chosen one at a time. Then the EMCY history.
+import { el, formatTime, hex, spacedHex } from '../dom';
+import { currentStates, latestChain } from '../transitions';
+import type { Machine, NodeInfo, NodeMachines, Transition } from '../types';
+import { renderMachine } from './machine_diagram';
 
-export interface NodeDetailActions {
-  writeControlWord(node: string, cw: number): void;
-  reportError(message: string): void;
-}
+const CHANNEL = /^(.*)\.ch(\d+)$/;
 
-export function renderNodeDetail(
-  host: HTMLElement, node: NodeInfo | undefined, nmtLast: { from: string; to: string } | null,
-  deviceSeen: { from: string; to: string } | null,
-): void {
-  if (!node) {
-    host.replaceChildren(el('p', {}, 'Select a node in the table.'));
-    return;
-  }
-  const parts: (Node | string)[] = [el('h3', {}, `${node.name} (node ${node.node_id})`)];
-  const nmtBox = el('figure', { class: 'diagram-box' },
-    renderDiagram(NMT_DIAGRAM, node.nmt, nmtLast),
-    el('figcaption', { 'data-testid': 'nmt-last-transition' },
-      nmtLast ? `NMT: last transition ${nmtLast.from} → ${nmtLast.to}` : `NMT: ${node.nmt}`));
-  parts.push(nmtBox);
-  const d = node.device;
-  if (d.profile === 'dsp408') {
-    const lt = d.last_transition;
-    const caption = lt
-      ? `Last transition ${lt.from} → ${lt.to} at ${formatTime(lt.t_us)}, control word ${describeControlWord(lt.control_word)}`
-      : 'No transition yet';
-    parts.push(el('figure', { class: 'diagram-box' },
-      renderDiagram(DSP408_DIAGRAM, d.state, markedTransition(d.state, lt, deviceSeen)),
-      el('figcaption', {},
-        el('div', { 'data-testid': 'device-last-transition' }, caption),
-        el('div', { 'data-testid': 'device-words' },
-          `State ${d.state}; control word ${describeControlWord(d.control_word)}; status word 0x${hex(d.status_word, 4)}`))));
-    const channels = channelsOf(d);
-    if (channels.length) {
-      parts.push(el('p', {}, 'The diagram shows channel 1. Every channel:'),
-        el('ul', { class: 'channels', 'data-testid': 'device-channels' },
-          ...channels.map((c) => el('li', { 'data-testid': `device-channel-${c.channel}` }, channelLine(c)))));
+export class NodeDetail {
+  private channel = new Map<string, string>();  // node → the MD2 channel machine shown
+
+  constructor(private host: HTMLElement, private onRedraw: () => void) {}
+
+  render(node: NodeInfo | undefined, machines: NodeMachines | undefined, history: readonly Transition[], unavailable: string | null): void {
+    if (!node) {
+      this.host.replaceChildren(el('p', {}, 'Select a node in the table.'));
+      return;
     }
-  } else if (d.profile === 'vtvpcd') {
-    parts.push(el('p', { 'data-testid': 'device-words' }, `VT-VPCD state ${d.state}; active faults: ${d.faults.length ? d.faults.join(', ') : 'none'}`));
-  } else if (d.profile === 'cia406') {
-    parts.push(el('p', { 'data-testid': 'device-words' },
-      `CiA 406 operating status 0x${hex(d.operating_status, 4)}, alarms 0x${hex(d.alarms, 4)}, warnings 0x${hex(d.warnings, 4)}`));
+    const powered = machines ? machines.powered && node.nmt !== 'OFF' : node.nmt !== 'OFF';
+    const parts: Node[] = [el('h3', {}, `${node.name} (node ${node.node_id})`,
+      powered ? '' : el('span', { class: 'badge off', 'data-testid': 'node-off' }, 'OFF: no power'))];
+    if (!machines) {
+      parts.push(el('p', { class: 'none', 'data-testid': 'machines-unavailable' }, unavailable ?? 'loading the state machines…'));
+    } else {
+      const boxes = el('div', { class: 'machines' });
+      for (const m of this.shownMachines(node.name, machines.machines, boxes)) boxes.append(this.machineBox(m, history));
+      parts.push(boxes);
+    }
+    const emcy = node.emcy.slice().reverse();
+    parts.push(el('h4', {}, 'EMCY history (newest first)'),
+      emcy.length
+        ? el('ol', { class: 'emcy-list', 'data-testid': 'emcy-list' },
+            ...emcy.map((e) => el('li', { class: e.code === 0 ? 'emcy-reset' : '' },
+              `${formatTime(e.t_us)}  ${hex(e.code, 4)}h  reg ${hex(e.register, 2)}h  ${spacedHex(e.data)}  ${e.text}`)))
+        : el('p', { 'data-testid': 'emcy-list' }, 'none'));
+    this.host.replaceChildren(...parts);
   }
-  const emcy = node.emcy.slice().reverse();
-  parts.push(el('h4', {}, 'EMCY history (newest first)'),
-    emcy.length
-      ? el('ol', { class: 'emcy-list', 'data-testid': 'emcy-list' },
-          ...emcy.map((e) => el('li', {}, `${formatTime(e.t_us)}  ${hex(e.code, 4)}h  reg 0x${hex(e.register, 2)}  ${e.data}  ${e.text}`)))
-      : el('p', { 'data-testid': 'emcy-list' }, 'none'));
-  host.replaceChildren(...parts);
-}
 
-/** The control-word buttons of a DSP 408 node; rendered once per selection so typing survives updates. */
-export function renderControlWordControls(host: HTMLElement, node: string | null, isDsp408: boolean, actions: NodeDetailActions): void {
-  if (!node || !isDsp408) {
-    host.replaceChildren();
-    return;
+  /** Every machine, except that of several channels (dsp408.ch1 ... ch8) only the chosen one,
+   *  with a selector put in front. */
+  private shownMachines(node: string, all: readonly Machine[], boxes: HTMLElement): Machine[] {
+    const channels = all.filter((m) => CHANNEL.test(m.machine));
+    if (channels.length < 2) return [...all];
+    const chosen = channels.find((m) => m.machine === this.channel.get(node)) ?? channels[0];
+    const select = el('select', { 'aria-label': 'Channel', 'data-testid': 'channel-select' },
+      ...channels.map((m) => el('option', { value: m.machine, selected: m === chosen }, `channel ${m.machine.match(CHANNEL)![2]}`)));
+    select.addEventListener('change', () => { this.channel.set(node, select.value); this.onRedraw(); });
+    boxes.append(el('label', { class: 'channel-choice' }, 'Device state machine of ', select));
+    return all.filter((m) => !channels.includes(m) || m === chosen);
   }
-  const cwInput = el('input', { type: 'text', value: '0x0007', size: 8, 'aria-label': 'Control word 6040h', 'data-testid': 'cw-input' });
-  const presets = CW_PRESETS.map((p) =>
-    button(p.label, { 'data-testid': `cw-preset-0x${hex(p.value, 4)}`, 'aria-label': `Write control word ${p.label}` },
-      () => actions.writeControlWord(node, p.value)));
-  host.replaceChildren(el('div', { class: 'cw-controls', role: 'group', 'aria-label': 'Control word (SDO write 6040:00)' },
-    el('span', {}, 'Control word 6040h by SDO: '), ...presets, cwInput,
-    button('Write', { 'data-testid': 'cw-write' }, () => {
-      const v = cwInput.value.trim();
-      const n = /^0x[0-9a-f]+$/i.test(v) ? parseInt(v.slice(2), 16) : /^\d+$/.test(v) ? parseInt(v, 10) : NaN;
-      if (Number.isInteger(n) && n >= 0 && n <= 0xffff) actions.writeControlWord(node, n);
-      else actions.reportError(`control word "${v}": give 0..65535 or 0x0000..0xFFFF`);
-    })));
+
+  private machineBox(m: Machine, history: readonly Transition[]): HTMLElement {
+    const current = currentStates(m, history);
+    const shown = [...current].join(' + ');
+    const chain = latestChain(history, m.machine);
+    const last = chain.length
+      ? `${chain.map((t) => t.transition).join(', ')} (${chain[0].from} → ${chain[chain.length - 1].to}) at ${formatTime(chain[0].t_us)}: ${chain[chain.length - 1].evidence || chain[0].cause}`
+      : `no transition recorded; state ${shown}`;
+    return el('figure', { class: `diagram-box machine-${m.machine.split('.')[0]}`, 'data-machine': m.machine },
+      el('figcaption', { class: 'machine-title' }, el('strong', {}, m.title || m.machine), ` — ${shown}`),
+      renderMachine(m, current, chain),
+      el('figcaption', { 'data-testid': `last-change-${m.machine}`, class: 'last-change' }, last),
+      m.note ? el('p', { class: 'machine-note', 'data-testid': `note-${m.machine}` }, m.note) : null);
+  }
 }

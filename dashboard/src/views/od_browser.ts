@@ -1,4 +1,5 @@
-// The object-dictionary browser: every entry of the selected node with its live value; writable
+// The object-dictionary browser: every entry of the selected node with the value the node holds
+// (in engineering units where the product documents a scaling); writable
 // entries get an input that writes over the bus by SDO (the frames show in the trace), and every
 // entry a read-by-SDO button. Refusals show the SDO abort code and its CiA 301 text.
 import { button, el } from '../dom';
@@ -8,6 +9,12 @@ import type { OdEntry } from '../types';
 export interface OdActions {
   write(entry: OdEntry, text: string): void;
   read(entry: OdEntry): void;
+}
+
+/** The Value column: what the dictionary holds now, in engineering units when the server gives them. */
+export function valueText(e: OdEntry): string {
+  const raw = formatValue(e.value, e.type);
+  return e.display !== undefined ? `${e.display}${e.unit && !e.display.endsWith(e.unit) ? ` ${e.unit}` : ''} (${raw})` : raw;
 }
 
 function testId(e: OdEntry): string {
@@ -31,7 +38,7 @@ export class OdBrowser {
     const body = el('tbody');
     for (const e of entries) {
       const id = testId(e);
-      const value = el('td', { 'data-testid': `od-value-${id}`, class: 'value' }, formatValue(e.value, e.type));
+      const value = el('td', { 'data-testid': `od-value-${id}`, class: 'value' }, valueText(e));
       const writable = e.access === 'rw' || e.access === 'wo';
       const input = writable ? el('input', { type: 'text', size: 10, 'aria-label': `New value for ${formatIndex(e.index, e.sub)} ${e.name}`, 'data-testid': `od-input-${id}` }) : null;
       const cell = el('td', { class: 'actions' },
@@ -46,17 +53,17 @@ export class OdBrowser {
       this.rows.set(id, { value, entry: e });
     }
     this.table.replaceChildren(
-      el('thead', {}, el('tr', {}, ...['Index:sub', 'Name', 'Type', 'Access', 'Value', 'SDO'].map((h) => el('th', { scope: 'col' }, h)))),
+      el('thead', {}, el('tr', {}, ...['Index:sub', 'Name', 'Type', 'Access', 'Held now', 'Over the bus (SDO)'].map((h) => el('th', { scope: 'col' }, h)))),
       body);
     this.applyFilter();
   }
 
-  /** Live values of the same node: update the value cells only, so inputs keep what is typed. */
+  /** Live values of the same node (all, or the changed ones): update the value cells only, so inputs keep what is typed. */
   update(entries: readonly OdEntry[]): void {
     for (const e of entries) {
       const r = this.rows.get(testId(e));
       if (!r) continue;
-      const text = formatValue(e.value, e.type);
+      const text = valueText(e);
       if (r.value.textContent !== text) r.value.textContent = text;
       r.entry = e;
     }

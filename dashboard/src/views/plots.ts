@@ -1,12 +1,17 @@
-// Live plots of chosen plant signals, one small uPlot chart per signal (their units differ:
-// metres, pascals, a fraction, rad/s), over a sliding window of simulated time.
+// Live plots of chosen plant signals, one small uPlot chart per signal in its display unit (bar,
+// mm, rpm, ...: units.ts), over a sliding window of simulated time; axis ticks in plain digits.
 import uPlot from 'uplot';
 import { el } from '../dom';
-import { formatReading } from '../signal_choice';
 import { SignalSeries } from '../signal_series';
-import type { SignalBatch } from '../types';
+import type { SignalBatch, SignalInfo } from '../types';
+import { formatSignal, signalInfo, tickLabels, toDisplay, unitLabel } from '../units';
 
 const WINDOW_US = 10_000_000;
+
+/** The y axis as wide as its longest tick label (uPlot measures nothing itself). */
+function axisWidth(_u: uPlot, values: string[] | null): number {
+  return 16 + 7 * Math.max(3, ...(values ?? []).map((v) => v.length));
+}
 
 export class Plots {
   private series: SignalSeries;
@@ -14,8 +19,9 @@ export class Plots {
   private grid = el('div', { class: 'plot-grid' });
   private dirty = false;
 
-  constructor(host: HTMLElement, all: readonly string[], private chosen: string[], onChange: (chosen: string[]) => void) {
+  constructor(host: HTMLElement, private signals: ReadonlyMap<string, SignalInfo>, private chosen: string[], onChange: (chosen: string[]) => void) {
     this.series = new SignalSeries(chosen, WINDOW_US);
+    const all = [...signals.keys()];
     const picker = el('details', { class: 'signal-picker' }, el('summary', {}, 'Choose signals'));
     for (const name of all) {
       const box = el('input', { type: 'checkbox', checked: chosen.includes(name), 'data-testid': `signal-choose-${name}` });
@@ -23,7 +29,8 @@ export class Plots {
         const next = box.checked ? [...this.chosen, name] : this.chosen.filter((n) => n !== name);
         onChange(next);
       });
-      picker.append(el('label', {}, box, ` ${name}`));
+      const u = unitLabel(this.info(name));
+      picker.append(el('label', {}, box, ` ${name}${u ? ` [${u}]` : ''}`));
     }
     host.replaceChildren(picker, this.grid);
     this.rebuild();
@@ -37,6 +44,15 @@ export class Plots {
     this.rebuild();
   }
 
+  private info(name: string): SignalInfo {
+    return this.signals.get(name) ?? signalInfo(name);
+  }
+
+  /** The newest value (SI) of a chosen signal. */
+  latest(name: string): number | undefined {
+    return this.series.latest(name);
+  }
+
   append(batch: SignalBatch): void {
     this.series.append(batch);
     this.dirty = true;
@@ -47,16 +63,18 @@ export class Plots {
     this.charts.clear();
     this.grid.replaceChildren();
     for (const name of this.chosen) {
+      const u = unitLabel(this.info(name));
       const readout = el('span', { class: 'readout', 'data-testid': `plot-value-${name}` }, '');
-      const box = el('figure', { class: 'plot', 'data-testid': `plot-${name}` }, el('figcaption', {}, name, ' ', readout));
+      const box = el('figure', { class: 'plot', 'data-testid': `plot-${name}` }, el('figcaption', {}, name, u ? ` [${u}]` : '', ' ', readout));
       this.grid.append(box);
       const plot = new uPlot({
-        width: 360, height: 150,
+        width: 330, height: 140,
         legend: { show: false },
         cursor: { show: false },
         scales: { x: { time: false } },
-        axes: [{ label: 't [s]', size: 30 }, { size: 78, values: (_u: uPlot, ticks: number[]) => ticks.map(formatReading) }],
-        series: [{}, { label: name, stroke: '#1f6fd1', width: 1.5, spanGaps: false }],
+        axes: [{ label: 't [s]', size: 30, values: (_u: uPlot, ticks: number[]) => tickLabels(ticks) },
+          { size: axisWidth, values: (_u: uPlot, ticks: number[]) => tickLabels(ticks) }],
+        series: [{}, { label: name, stroke: '#1f6fd1', width: 1.5, spanGaps: false, points: { show: false } }],
       }, [[], []], box);
       this.charts.set(name, { plot, readout });
     }
@@ -69,9 +87,10 @@ export class Plots {
     this.chosen.forEach((name, i) => {
       const c = this.charts.get(name);
       if (!c) return;
-      c.plot.setData([data[0], data[i + 1]] as uPlot.AlignedData);
+      const info = this.info(name);
+      c.plot.setData([data[0], data[i + 1].map((v) => toDisplay(v, info))] as uPlot.AlignedData);
       const v = this.series.latest(name);
-      c.readout.textContent = v === undefined || Number.isNaN(v) ? '' : `= ${formatReading(v)}`;
+      c.readout.textContent = v === undefined || Number.isNaN(v) ? '' : `= ${formatSignal(v, info)}`;
     });
   }
 }

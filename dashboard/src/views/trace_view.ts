@@ -1,7 +1,7 @@
 // The decoded trace: filters by node and service group, pause, clear, and export of what is
 // shown as a candump log. Renders at most a few times a second and only the newest rows.
 import { candumpLog } from '../candump_export';
-import { button, el, formatTime, hex } from '../dom';
+import { button, el, formatTime, hex, spacedHex } from '../dom';
 import { TraceBuffer } from '../trace_buffer';
 import { applyFilter, SERVICE_GROUPS, ServiceGroup, TraceFilter } from '../trace_filter';
 import type { Frame, ScenarioNode } from '../types';
@@ -21,6 +21,7 @@ export class TraceView {
   private pauseButton: HTMLButtonElement;
   private dirty = true;
   private streamDropped = 0;
+  private only: number | null = null;
 
   private rowsRendered: number;
 
@@ -64,11 +65,17 @@ export class TraceView {
     this.dirty = true;
   }
 
+  /** The lesson view: only this node's frames (and broadcasts), whatever the boxes say; null = the boxes. */
+  onlyNode(id: number | null): void {
+    this.only = id;
+    this.invalidate();
+  }
+
   filter(): TraceFilter {
-    const nodes = new Set([...this.nodeBoxes].filter(([, b]) => b.checked).map(([id]) => id));
+    const nodes = this.only !== null ? new Set([this.only]) : new Set([...this.nodeBoxes].filter(([, b]) => b.checked).map(([id]) => id));
     const services = new Set([...this.serviceBoxes].filter(([, b]) => b.checked).map(([s]) => s));
     return {
-      nodes: nodes.size === this.nodeBoxes.size ? null : nodes,
+      nodes: this.only === null && nodes.size === this.nodeBoxes.size ? null : nodes,
       services: services.size === this.serviceBoxes.size ? null : services,
     };
   }
@@ -104,10 +111,10 @@ export class TraceView {
     this.dirty = false;
     const shown = this.shown();
     const rows = shown.slice(-this.rowsRendered).reverse().map((f) =>
-      el('tr', { class: `svc-${f.service.toLowerCase()}`, 'data-service': f.service },
+      el('tr', { class: `svc-${f.service.toLowerCase()}${f.service === 'EMCY' && f.data.startsWith('0000') ? ' emcy-reset' : ''}`, 'data-service': f.service },
         el('td', { class: 'mono' }, formatTime(f.t_us)), el('td', {}, f.bus), el('td', {}, f.dir),
         el('td', { class: 'mono' }, f.ext ? hex(f.id, 8) : hex(f.id, 3)), el('td', {}, f.service),
-        el('td', {}, f.node === null ? '' : String(f.node)), el('td', { class: 'mono' }, f.rtr ? `RTR dlc ${f.dlc}` : f.data),
+        el('td', {}, f.node === null ? '' : String(f.node)), el('td', { class: 'mono' }, f.rtr ? `RTR dlc ${f.dlc}` : spacedHex(f.data)),
         el('td', { class: 'decoded' }, f.text)));
     this.body.replaceChildren(...rows);
     const dropped = this.buffer.dropped + this.streamDropped;

@@ -1,0 +1,79 @@
+// Draws a state machine as the C++ profile describes it (GET /api/nodes/{n}/machines): states on
+// the grid of their row/col hints, edges named by their transition with the condition on hover.
+// The current state is filled; each step of the latest change is drawn bold and numbered.
+// States carry data-state / data-current, edges data-transition / data-step, for tests and readers.
+import { svg } from '../dom';
+import type { Machine, MachineEdge, Transition } from '../types';
+
+const COL_W = 190, ROW_H = 84, BOX_H = 32, MARGIN = 24;
+
+function boxWidth(label: string): number {
+  return Math.min(COL_W - 14, Math.max(80, label.length * 7.4 + 18));
+}
+
+/** Point where the segment from the box centre (cx, cy) towards (tx, ty) leaves the box. */
+function boxExit(cx: number, cy: number, w: number, tx: number, ty: number): [number, number] {
+  const dx = tx - cx, dy = ty - cy;
+  if (dx === 0 && dy === 0) return [cx, cy];
+  const sx = dx !== 0 ? (w / 2) / Math.abs(dx) : Infinity;
+  const sy = dy !== 0 ? (BOX_H / 2) / Math.abs(dy) : Infinity;
+  const s = Math.min(sx, sy);
+  return [cx + dx * s, cy + dy * s];
+}
+
+export const edgeId = (e: Pick<MachineEdge, 'transition' | 'from' | 'to'>) => `${e.transition}:${e.from}->${e.to}`;
+
+export function renderMachine(m: Machine, current: ReadonlySet<string>, chain: readonly Transition[]): SVGSVGElement {
+  const rows = Math.max(1, ...m.states.map((s) => s.row + 1));
+  const cols = Math.max(1, ...m.states.map((s) => s.col + 1));
+  const width = cols * COL_W + 2 * MARGIN, height = rows * ROW_H + 2 * MARGIN - (ROW_H - BOX_H) / 2;
+  const at = new Map(m.states.map((s) => [s.name, { x: MARGIN + s.col * COL_W + COL_W / 2, y: MARGIN + s.row * ROW_H + BOX_H / 2, s }]));
+  const step = new Map(chain.map((t, i) => [edgeId(t), i + 1]));
+  const id = m.machine.replace(/[^a-z0-9]/gi, '-');
+  const root = svg('svg', {
+    viewBox: `0 0 ${width} ${height}`, class: 'diagram', role: 'img',
+    'aria-label': `${m.title}: current state ${[...current].join(' + ')}`, 'data-testid': `diagram-${m.machine}`,
+    style: `max-width:${width * 1.15}px`,
+  });
+  root.append(svg('defs', {},
+    svg('marker', { id: `arrow-${id}`, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 8, markerHeight: 8, markerUnits: 'userSpaceOnUse', orient: 'auto-start-reverse' },
+      svg('path', { d: 'M 0 0 L 10 5 L 0 10 z', class: 'arrowhead' })),
+    svg('marker', { id: `arrow-last-${id}`, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 11, markerHeight: 11, markerUnits: 'userSpaceOnUse', orient: 'auto-start-reverse' },
+      svg('path', { d: 'M 0 0 L 10 5 L 0 10 z', class: 'arrowhead last' }))));
+  // Several edges between one pair of states fan out: the n-th bends further.
+  const seenPairs = new Map<string, number>();
+  const edges = svg('g', {}), marked = svg('g', {});
+  for (const e of m.edges) {
+    const a = at.get(e.from), b = at.get(e.to);
+    if (!a || !b || a === b) continue;
+    const pair = `${e.from}->${e.to}`;
+    const nth = seenPairs.get(pair) ?? 0;
+    seenPairs.set(pair, nth + 1);
+    const len = Math.hypot(b.x - a.x, b.y - a.y);
+    // An edge that skips states on its row or column swings wide around them.
+    const skips = (a.s.col === b.s.col && Math.abs(a.s.row - b.s.row) > 1) || (a.s.row === b.s.row && Math.abs(a.s.col - b.s.col) > 1);
+    const bend = (skips ? Math.min(130, 40 + len * 0.25) : Math.min(70, 14 + len * 0.1)) + nth * 18;
+    const nx = -(b.y - a.y) / len, ny = (b.x - a.x) / len;
+    const mx = (a.x + b.x) / 2 + nx * bend, my = (a.y + b.y) / 2 + ny * bend;
+    const [x1, y1] = boxExit(a.x, a.y, boxWidth(e.from), mx, my);
+    const [x2, y2] = boxExit(b.x, b.y, boxWidth(e.to), mx, my);
+    const n = step.get(edgeId(e));
+    const label = n === undefined ? e.transition : `${n}: ${e.transition}`;
+    const g = svg('g', { class: n === undefined ? 'edge' : 'edge last', 'data-transition': e.transition, 'data-edge': edgeId(e), 'data-step': n },
+      svg('title', {}, `${e.transition} (${e.from} → ${e.to}): ${e.condition}`),
+      svg('path', { d: `M ${x1} ${y1} Q ${mx} ${my} ${x2} ${y2}`, 'marker-end': `url(#${n === undefined ? 'arrow-' : 'arrow-last-'}${id})` }),
+      // the label beside the curve's middle, on the outer side of its bend
+      svg('text', { x: (x1 + 2 * mx + x2) / 4 + nx * 4, y: (y1 + 2 * my + y2) / 4 + ny * 4 + 4, class: 'edge-label',
+        'text-anchor': Math.abs(nx) > 0.5 ? (nx > 0 ? 'start' : 'end') : 'middle' }, label));
+    (n === undefined ? edges : marked).append(g);
+  }
+  root.append(edges, marked);  // the marked steps over the others
+  for (const { x, y, s } of at.values()) {
+    const w = boxWidth(s.name);
+    const isCurrent = current.has(s.name);
+    root.append(svg('g', { class: `state kind-${s.kind}${isCurrent ? ' current' : ''}`, 'data-state': s.name, 'data-current': isCurrent ? 'true' : 'false' },
+      svg('rect', { x: x - w / 2, y: y - BOX_H / 2, width: w, height: BOX_H, rx: 6 }),
+      svg('text', { x, y: y + 4, 'text-anchor': 'middle' }, s.name)));
+  }
+  return root;
+}
