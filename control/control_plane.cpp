@@ -149,19 +149,6 @@ std::string display_text(canopen::DataType type, const std::vector<std::uint8_t>
   return {};
 }
 
-json value_json(canopen::DataType type, const std::vector<std::uint8_t>& bytes) {
-  using canopen::DataType;
-  if (type == DataType::VisibleString) {
-    std::string s(bytes.begin(), bytes.end());
-    while (!s.empty() && s.back() == '\0') s.pop_back();
-    return s;
-  }
-  if (canopen::is_variable_length(type) || bytes.size() != canopen::type_size(type)) return hex_string(bytes.data(), bytes.size());
-  if (canopen::is_real(type)) return scenario::decode_number(type, bytes);
-  if (canopen::is_signed_integer(type)) return canopen::decode_signed(bytes);
-  return canopen::decode_unsigned(bytes);
-}
-
 std::string abort_hex(std::uint32_t code) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "0x%08X", code);
@@ -457,6 +444,7 @@ struct ControlPlane::Server {
     router.add("POST", "/api/sync", guarded([this](const http::Request& req, http::Response& res) { sync_control(req, res); }));
     router.add("GET", R"(/api/nodes/([^/]+)/pdos)", guarded([this](const http::Request& req, http::Response& res) { pdos(req, res); }));
     router.add("POST", R"(/api/nodes/([^/]+)/rpdo)", guarded([this](const http::Request& req, http::Response& res) { rpdo(req, res); }));
+    router.add("POST", "/api/events/node", guarded([this](const http::Request& req, http::Response& res) { select_node(req, res); }));
     router.add("POST", "/api/restart", guarded([this](const http::Request&, http::Response& res) { restart(res); }));
 
   }
@@ -904,6 +892,20 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}, {"id", f.id}, {"data", hex_string(f.data.data(), f.dlc)}});
   }
 
+  /// The node whose dictionary a stream carries ("od" deltas): {"stream": ID, "node": NAME|null}.
+  void select_node(const http::Request& req, http::Response& res) {
+    const auto body = parse_body(req);
+    const auto id = static_cast<std::uint64_t>(*integer_field(body, "stream", 1, INT64_MAX));
+    if (!body.contains("node")) throw HttpError{400, "missing field 'node' (a node's name, or null for none)"};
+    int selected = -1;
+    if (body["node"].is_string()) selected = static_cast<int>(node(body["node"].get<std::string>()));
+    else if (!body["node"].is_null()) throw HttpError{400, "field 'node' must be a node's name or null"};
+    need_run();
+    if (!hub->select_node(id, selected))
+      throw HttpError{404, "no stream " + std::to_string(id) + " that may choose a node (a shared read-only stream may not)"};
+    reply(res, 200, {{"ok", true}});
+  }
+
   void restart(http::Response& res) {
     need_run();
     auto done = cp.bridge_.request_restart();
@@ -921,8 +923,11 @@ struct ControlPlane::Server {
         json q = {{"rate", req.param("rate")}};
         rate = static_cast<double>(*integer_field(q, "rate", 1, 50));
       }
-      auto client = hub->open(list, rate);
-      if (!client) throw HttpError{503, "too many event streams (at most " + std::to_string(cp.options_.max_streams) + ")"};
+      const int selected = req.has_param("node") ? static_cast<int>(node(req.param("node"))) : -1;
+      auto client = hub->open(list, rate, selected);
+      if (!client)
+        throw HttpError{503, "too many event streams (at most " + std::to_string(cp.options_.max_streams) + ", and " +
+                                 std::to_string(EventHub::kMaxSharedClients) + " shared read-only ones)"};
       res.status = 200;
       res.type = "text/event-stream";
       res.headers.emplace_back("Cache-Control", "no-cache");

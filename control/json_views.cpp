@@ -3,6 +3,8 @@
 #include <cstdio>
 
 #include "devices/canopen/nmt_state.h"
+#include "devices/canopen/object_dictionary.h"
+#include "engine/value_codec.h"
 
 namespace control {
 
@@ -16,6 +18,19 @@ json signal_json(const std::string& name, const std::string& unit, const sim::Di
           {"display_unit", own ? std::string(display.unit) : unit},
           {"display_scale", own ? display.scale : 1.0},
           {"display_offset", own ? display.offset : 0.0}};
+}
+
+json value_json(canopen::DataType type, const std::vector<std::uint8_t>& bytes) {
+  using canopen::DataType;
+  if (type == DataType::VisibleString) {
+    std::string s(bytes.begin(), bytes.end());
+    while (!s.empty() && s.back() == '\0') s.pop_back();
+    return s;
+  }
+  if (canopen::is_variable_length(type) || bytes.size() != canopen::type_size(type)) return hex_string(bytes.data(), bytes.size());
+  if (canopen::is_real(type)) return scenario::decode_number(type, bytes);
+  if (canopen::is_signed_integer(type)) return canopen::decode_signed(bytes);
+  return canopen::decode_unsigned(bytes);
 }
 
 std::string hex_string(const std::uint8_t* data, std::size_t n) {

@@ -28,8 +28,12 @@
 
 namespace {
 
-enum class Mode { Off, On, Streaming };
-const char* name(Mode m) { return m == Mode::Off ? "UI off" : m == Mode::On ? "UI on, no client" : "UI on, 1 client streaming"; }
+// Page: what the dashboard opens (issue 21): one stream with a node's dictionary as deltas, four
+// signals at 10 Hz, frames, faults and clock; no polls.
+enum class Mode { Off, On, Streaming, Page };
+const char* name(Mode m) {
+  return m == Mode::Off ? "UI off" : m == Mode::On ? "UI on, no client" : m == Mode::Streaming ? "UI on, 1 client streaming" : "UI on, 1 page open";
+}
 
 double cpu_seconds(clockid_t id) {
   timespec ts{};
@@ -60,6 +64,7 @@ struct Result {
   double simulated = 0, wall = 0, thread_cpu = 0, process_cpu = 0, attach_cpu = 0;
   scenario::RunSummary summary;
   std::uint64_t stream_bytes = 0, frame_events = 0, frames_dropped = 0;
+  std::vector<double> ack_ms;  ///< Page in virtual time: POST /api/sync answered, full speed
 };
 
 Result run(const scenario::Scenario& s, Mode mode, bool realtime, double duration) {
@@ -77,7 +82,7 @@ Result run(const scenario::Scenario& s, Mode mode, bool realtime, double duratio
     u.port = 0;
     u.out = nullptr;
     // Streaming: paused until the client's stream is open (capture runs only while one listens).
-    u.clock.start_paused = mode == Mode::Streaming;
+    u.clock.start_paused = mode == Mode::Streaming || mode == Mode::Page;
     u.clock.speed = 0;
     ui = std::make_unique<control::ControlPlane>(u);
     if (auto err = ui->bind(); !err.empty()) {
@@ -103,11 +108,12 @@ Result run(const scenario::Scenario& s, Mode mode, bool realtime, double duratio
   std::atomic<bool> resumed{false};
   std::chrono::steady_clock::time_point resumed_at;
   std::thread client([&] {
-    if (mode != Mode::Streaming) return;
+    if (mode != Mode::Streaming && mode != Mode::Page) return;
     while (!ui->bridge().attached() && !done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
     httplib::Client c("127.0.0.1", ui->port());
     c.set_read_timeout(5, 0);
-    c.Get("/api/events?signals=cyl.position,pump.swivel_angle,p_supply.pressure,shaft.speed&rate=50",
+    const std::string signals = "signals=cyl.position,pump.swivel_angle,p_supply.pressure,shaft.speed";
+    c.Get(mode == Mode::Page ? ("/api/events?node=dsv&rate=10&" + signals).c_str() : ("/api/events?rate=50&" + signals).c_str(),
           [&](const char* data, std::size_t n) {
             if (!resumed.exchange(true)) {
               resumed_at = std::chrono::steady_clock::now();
@@ -119,6 +125,19 @@ Result run(const scenario::Scenario& s, Mode mode, bool realtime, double duratio
             return !done.load();
           });
   });
+  // A click at full speed: a command that waits for the simulation (POST /api/sync), 20 times.
+  std::thread clicker([&] {
+    if (mode != Mode::Page || realtime) return;
+    while (!resumed && !done) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    httplib::Client c("127.0.0.1", ui->port());
+    for (int k = 0; k < 20 && !done; ++k) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      const auto t = std::chrono::steady_clock::now();
+      const auto res = c.Post("/api/sync", "{\"period_ms\": 0}", "application/json");
+      if (res && res->status == 200)
+        r.ack_ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count());
+    }
+  });
   const auto w0 = std::chrono::steady_clock::now();
   const double p0 = cpu_seconds(CLOCK_PROCESS_CPUTIME_ID), t0 = cpu_seconds(CLOCK_THREAD_CPUTIME_ID);
   runner.run();
@@ -127,10 +146,11 @@ Result run(const scenario::Scenario& s, Mode mode, bool realtime, double duratio
   r.process_cpu = cpu_seconds(CLOCK_PROCESS_CPUTIME_ID) - p0 - r.attach_cpu;
   const auto w1 = std::chrono::steady_clock::now();
   // The client takes what the hub still has for it (not measured: the run is over).
-  if (mode == Mode::Streaming) std::this_thread::sleep_for(std::chrono::seconds(1));
+  if (mode == Mode::Streaming || mode == Mode::Page) std::this_thread::sleep_for(std::chrono::seconds(1));
   done = true;
   stopper.join();
   client.join();
+  clicker.join();
   r.wall = std::chrono::duration<double>(w1 - (resumed ? resumed_at : w0)).count();
   r.summary = runner.summary();
   if (ui) r.frames_dropped = ui->bridge().frames_dropped();
@@ -139,13 +159,36 @@ Result run(const scenario::Scenario& s, Mode mode, bool realtime, double duratio
   return r;
 }
 
+/// The figures issue 21 asks for ("Cheap to watch"), against their targets.
+void print_issue21_figures(const scenario::Scenario& s, const scenario::Scenario& idle, double duration, double rt_duration) {
+  std::printf("ui_bench: issue 21 figures\n");
+  if (rt_duration > 0) {
+    const auto r = run(idle, Mode::Page, true, rt_duration);
+    std::printf("  real time, quiet bus, one page open: vplant CPU %.1f %% of a core (target <= 5 %%)\n",
+                100.0 * r.process_cpu / r.wall);
+  }
+  if (duration > 0) {
+    const auto without = run(s, Mode::On, false, duration);
+    const auto with = run(s, Mode::Page, false, duration);
+    const double a = without.simulated / without.wall, b = with.simulated / with.wall;
+    std::printf("  virtual time, full speed: %.0fx without a page, %.0fx with one open: %.0f %% (target >= 90 %%)\n", a, b,
+                100.0 * b / a);
+    auto acks = with.ack_ms;
+    std::sort(acks.begin(), acks.end());
+    if (!acks.empty())
+      std::printf("  a click at full speed (POST /api/sync, %zu times): median %.1f ms, worst %.1f ms (target <= 200 ms)\n",
+                  acks.size(), acks[acks.size() / 2], acks.back());
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   double duration = 10, rt_duration = 3;
   int repeat = 1;
-  std::vector<Mode> modes{Mode::Off, Mode::On, Mode::Streaming};
+  std::vector<Mode> modes{Mode::Off, Mode::On, Mode::Streaming, Mode::Page};
+  bool issue_only = false;
   for (int i = 1; i < argc; ++i) {
     if (!std::strcmp(argv[i], "--duration") && i + 1 < argc) {
       duration = std::atof(argv[++i]);
@@ -153,17 +196,20 @@ int main(int argc, char** argv) {
       rt_duration = std::atof(argv[++i]);
     } else if (!std::strcmp(argv[i], "--repeat") && i + 1 < argc) {
       repeat = std::max(1, std::atoi(argv[++i]));
+    } else if (!std::strcmp(argv[i], "--issue21-only")) {
+      issue_only = true;
     } else if (!std::strcmp(argv[i], "--only") && i + 1 < argc) {
       const std::string m = argv[++i];
       if (m == "off") modes = {Mode::Off};
       else if (m == "on") modes = {Mode::On};
       else if (m == "stream") modes = {Mode::Streaming};
+      else if (m == "page") modes = {Mode::Page};
       else {
-        std::fprintf(stderr, "ui_bench: --only takes off, on or stream, not '%s'\n", m.c_str());
+        std::fprintf(stderr, "ui_bench: --only takes off, on, stream or page, not '%s'\n", m.c_str());
         return 2;
       }
     } else {
-      std::fprintf(stderr, "usage: ui_bench [--duration S] [--realtime S] [--repeat N] [--only off|on|stream]\n");
+      std::fprintf(stderr, "usage: ui_bench [--duration S] [--realtime S] [--repeat N] [--only off|on|stream|page] [--issue21-only]\n");
       return 2;
     }
   }
@@ -184,8 +230,8 @@ int main(int argc, char** argv) {
   if (duration > 0)
     std::printf("ui_bench: reference plant, SYNC 1 ms, %.0f s virtual time (CPU per thread / process via clock_gettime)\n", duration);
   // Interleaved repeats on a busy machine: the best run of each way is the one least disturbed.
-  double best[3] = {0, 0, 0};
-  for (int k = 0; k < repeat && duration > 0; ++k) {
+  double best[4] = {0, 0, 0, 0};
+  for (int k = 0; k < repeat && duration > 0 && !issue_only; ++k) {
     for (const Mode m : modes) {
       const auto r = run(s, m, false, duration);
       auto& b = best[static_cast<int>(m)];
@@ -200,7 +246,7 @@ int main(int argc, char** argv) {
       std::printf("\n");
     }
   }
-  if (duration > 0 && repeat > 1) {
+  if (duration > 0 && repeat > 1 && !issue_only) {
     std::printf("  best of %d per scheduler-thread CPU s:", repeat);
     for (const Mode m : modes) {
       const double b = best[static_cast<int>(m)];
@@ -210,9 +256,10 @@ int main(int argc, char** argv) {
     }
     std::printf("\n");
   }
-  if (rt_duration <= 0) return 0;
   scenario::Scenario idle = s;
   idle.script.clear();
+  print_issue21_figures(s, idle, duration, rt_duration);
+  if (rt_duration <= 0 || issue_only) return 0;
   std::printf("ui_bench: reference plant without script, %.0f s real time\n", rt_duration);
   for (int k = 0; k < repeat; ++k) {
     for (const Mode m : modes) {
