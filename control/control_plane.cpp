@@ -419,6 +419,7 @@ struct ControlPlane::Server {
     }));
     router.add("POST", "/api/clock", guarded([this](const http::Request& req, http::Response& res) { clock_control(req, res); }));
     router.add("GET", "/api/events", [this](const http::Request& req, http::Response& res) { events(req, res); });
+    cp.exercises_.add_routes(router);
 
   }
 
@@ -773,7 +774,8 @@ struct ControlPlane::Server {
   }
 };
 
-ControlPlane::ControlPlane(UiOptions options) : options_(std::move(options)), bridge_(options_.clock) {
+ControlPlane::ControlPlane(UiOptions options)
+    : options_(std::move(options)), bridge_(options_.clock), exercises_(bridge_, options_.exercises_dir, options_.exercise) {
   server_ = std::make_unique<Server>(*this);
 }
 
@@ -810,6 +812,7 @@ std::string ControlPlane::url() const {
 }
 
 void ControlPlane::attach(const scenario::RunContext& context) {
+  exercises_.attach(context);  // first: a bad --exercise ends the run before anything serves
   bridge_.attach(context);
   auto& s = *server_;
   s.build_static(context);

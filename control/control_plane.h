@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+#include "control/exercise_host.h"
 #include "control/sim_bridge.h"
 #include "engine/run_extension.h"
 
@@ -21,6 +22,8 @@ struct UiOptions {
   ClockOptions clock;
   std::size_t max_streams = 4;
   std::FILE* out = stderr;    ///< the URL line and warnings; nullptr = silent
+  std::string exercises_dir;  ///< exercise files (docs/exercises.md); "" = none
+  std::string exercise;       ///< selected at the start ("" = none)
 };
 
 namespace http {
@@ -48,7 +51,10 @@ class ControlPlane final : public scenario::RunExtension {
   // scenario::RunExtension: attach starts serving (and prints the URL); detach stops the
   // simulation side (the server answers 503 "the run has ended" until destroyed).
   void attach(const scenario::RunContext& context) override;
-  bool before_tick(bool end_reached) override { return bridge_.before_tick(end_reached); }
+  bool before_tick(bool end_reached) override {
+    exercises_.check();
+    return bridge_.before_tick(end_reached);
+  }
   void detach() override;
 
   SimBridge& bridge() { return bridge_; }
@@ -67,6 +73,7 @@ class ControlPlane final : public scenario::RunExtension {
   UiOptions options_;
   int port_ = 0;
   SimBridge bridge_;
+  ExerciseHost exercises_;
   std::unique_ptr<Server> server_;
 };
 

@@ -14,6 +14,7 @@ import { OdBrowser } from './views/od_browser';
 import { defaultSignals } from './signal_choice';
 import { Plots } from './views/plots';
 import { TraceView } from './views/trace_view';
+import { mountExerciseView } from './views/exercise_view';
 
 const $ = (id: string) => document.getElementById(id) as HTMLElement;
 
@@ -222,6 +223,7 @@ async function main(): Promise<void> {
   setInterval(() => void refreshOd(), 1000);
   setInterval(() => void refreshFaults(), 2000);
   setInterval(() => void refreshFindings(), 2000);
+  mountExerciseView(document.querySelector('main') ?? document.body);
 }
 
 main().catch((e) => {

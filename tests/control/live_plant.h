@@ -23,7 +23,9 @@ namespace vtest {
 class LivePlant {
  public:
   /// `scenario`: loaded by the caller; its script and duration are dropped (the test drives).
-  LivePlant(scenario::Scenario scenario, const scenario::Environment& env, std::size_t max_streams = 4)
+  /// `exercises_dir`: the control plane's exercise files (docs/exercises.md), "" = none.
+  LivePlant(scenario::Scenario scenario, const scenario::Environment& env, std::size_t max_streams = 4,
+            std::string exercises_dir = "")
       : scenario_(std::move(scenario)) {
     scenario_.script.clear();
     scenario_.clock.duration.reset();
@@ -34,6 +36,7 @@ class LivePlant {
     u.clock.speed = 0;
     u.max_streams = max_streams;
     u.out = nullptr;
+    u.exercises_dir = std::move(exercises_dir);
     plane_ = std::make_unique<control::ControlPlane>(u);
     const auto err = plane_->bind();
     EXPECT_EQ(err, "");

@@ -17,7 +17,7 @@ for f in ./usr/bin/vplant ./usr/include/vplant/simulation.h ./usr/include/vplant
          ./usr/lib/libvplant_api.a ./usr/lib/libvplant_engine.a ./usr/lib/cmake/vplant/vplantConfig.cmake \
          ./usr/lib/cmake/vplant/vplantConfigVersion.cmake ./usr/lib/cmake/vplant/vplantTargets.cmake \
          ./usr/share/vplant/eds/WAGDSVC1.eds ./usr/share/vplant/eds/hlt1100.eds ./usr/share/vplant/eds/vtvpcd.eds \
-         ./usr/share/vplant/scenarios/reference-plant.yaml ./usr/share/doc/vplant/README.md \
+         ./usr/share/vplant/scenarios/reference-plant.yaml ./usr/share/vplant/exercises/nmt.yaml ./usr/share/doc/vplant/README.md \
          ./usr/share/doc/vplant/embedding.md; do
   grep -qx "$f" "$tmp/files" || { echo "missing from the package: $f"; fail=1; }
 done

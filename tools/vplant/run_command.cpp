@@ -1,5 +1,6 @@
 // `vplant run SCENARIO`: the whole plant from a scenario file (docs/scenarios.md). Exit codes:
 // 0 every assertion held, 1 one failed, 2 bad input (file, option, interface).
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -40,7 +41,24 @@ struct RunArgs {
   bool report_no_index = false;
   bool rt = false;
   bool power_on_first_client = false;
+  std::string exercises;  ///< "" = the shipped folder
+  std::string exercise;
 };
+
+/// The shipped exercises: beside an installed binary (PREFIX/bin → PREFIX/share/vplant/exercises),
+/// else the source tree's folder this binary was built from.
+std::string default_exercises_dir() {
+  char exe[4096];
+  const auto n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
+  if (n > 0) {
+    std::string path(exe, static_cast<std::size_t>(n));
+    const auto slash = path.rfind('/');
+    const std::string installed = path.substr(0, slash == std::string::npos ? 0 : slash) + "/../share/vplant/exercises";
+    struct stat st{};
+    if (::stat(installed.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return installed;
+  }
+  return VPLANT_SOURCE_EXERCISES;
+}
 
 bool stop_active_run() {
   auto* r = scenario::active_runner();
@@ -83,6 +101,10 @@ int run(const RunArgs& a) {
   o.progress = !a.quiet && ::isatty(STDERR_FILENO);
   // The control plane: --ui overrides the scenario's `ui:`; made once the scenario is loaded.
   std::unique_ptr<control::ControlPlane> ui;
+  if (!a.exercise.empty() && a.ui.empty()) {
+    std::fprintf(stderr, "vplant run: --exercise needs --ui (the page shows it)\n");
+    return kExitBadInput;
+  }
   if (!a.ui.empty()) {
     control::UiOptions probe;
     if (auto err = control::parse_ui_address(a.ui, probe); !err.empty()) {
@@ -99,6 +121,8 @@ int run(const RunArgs& a) {
     u.allow_remote = a.ui_allow_remote || (a.ui.empty() && s.ui.allow_remote);
     u.clock.start_paused = a.ui_run ? false : s.ui.start_paused;
     u.clock.speed = a.ui_speed >= 0 ? a.ui_speed : s.ui.speed;
+    u.exercises_dir = a.exercises.empty() ? default_exercises_dir() : a.exercises;
+    u.exercise = a.exercise;
     ui = std::make_unique<control::ControlPlane>(u);
     if (auto err = ui->bind(); !err.empty()) throw scenario::LoadError(mark, err);
     return ui.get();
@@ -146,6 +170,9 @@ Runner add_run_command(CLI::App& app) {
   app.add_flag("--power-on-first-client", a->power_on_first_client,
                "a bus served over socketcand: power its nodes when the first client opens it (raw mode), so the "
                "master sees every boot-up (docs/remote.md)");
+  app.add_option("--exercises", a->exercises,
+                 "with --ui: the folder of exercise files (docs/exercises.md; default: the shipped exercises)");
+  app.add_option("--exercise", a->exercise, "with --ui: select this exercise at the start (e.g. nmt, dsp408)");
   app.add_flag("--strict", a->strict, "EDS nodes: reject the CiA 306 deviations that are otherwise loaded with a warning");
   // `vplant test` runs each case of a sweep as its own process (docs/scenarios.md, "matrix").
   app.add_option("--case", a->case_name, "run only this case of the file's matrix")->group("");

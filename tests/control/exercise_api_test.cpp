@@ -1,0 +1,141 @@
+// The exercise endpoints (control/exercise_endpoints.cpp) on the reference plant in virtual time:
+// each shipped exercise solved through the HTTP API with every step done, and the wrong thing done
+// with the step left open; selection errors answered with their reasons.
+#include <gtest/gtest.h>
+
+#include "engine/environment.h"
+#include "engine/scenario_loader.h"
+#include "tests/control/live_plant.h"
+
+namespace {
+
+using nlohmann::json;
+using vtest::LivePlant;
+
+class ExerciseApi : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    plant_ = std::make_unique<LivePlant>(scenario::load_scenario_file(VPLANT_REFERENCE_PLANT), scenario::default_environment(), 4,
+                                         VPLANT_EXERCISES);
+    p().run_ms(600);  // every node booted
+  }
+  LivePlant& p() { return *plant_; }
+  json get(const std::string& path) { return LivePlant::json_of(p().http().Get(path.c_str())); }
+  static int status(const httplib::Result& r) { return r ? r->status : -1; }
+  void select(const std::string& name) {
+    const auto r = p().post("/api/exercise", {{"name", name}});
+    ASSERT_EQ(status(r), 200) << (r ? r->body : "");
+    const auto e = LivePlant::json_of(r);
+    EXPECT_EQ(e["name"], name);
+    for (const auto& s : e["steps"]) EXPECT_FALSE(s["done"].get<bool>());
+  }
+  /// The steps done so far (all of them before the first open one).
+  std::size_t done_steps() {
+    const auto e = get("/api/exercise");
+    std::size_t n = 0;
+    for (const auto& s : e["steps"]) n += s["done"].get<bool>() ? 1 : 0;
+    return n;
+  }
+  void nmt(const std::string& command, const json& node) {
+    ASSERT_EQ(status(p().post("/api/nmt", {{"command", command}, {"node", node}})), 200);
+    p().run_ms(20);
+  }
+  void sdo(const std::string& node, int index, int sub, std::int64_t value) {
+    const auto r = p().post("/api/nodes/" + node + "/sdo", {{"index", index}, {"sub", sub}, {"value", value}});
+    ASSERT_EQ(status(r), 200);
+    ASSERT_TRUE(LivePlant::json_of(r)["ok"].get<bool>()) << r->body;
+  }
+  /// Every step done, each at a virtual time no earlier than the one before.
+  void expect_all_done() {
+    const auto e = get("/api/exercise");
+    EXPECT_TRUE(e["done"].get<bool>()) << e.dump(1);
+    std::int64_t last = 0;
+    for (const auto& s : e["steps"]) {
+      ASSERT_TRUE(s["done"].get<bool>()) << s["title"];
+      EXPECT_GE(s["t_us"].get<std::int64_t>(), last);
+      last = s["t_us"].get<std::int64_t>();
+    }
+  }
+
+  std::unique_ptr<LivePlant> plant_;
+};
+
+TEST_F(ExerciseApi, ListsTheShippedExercises) {
+  const auto names = get("/api/exercises");
+  for (const char* want : {"nmt", "heartbeat"}) EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+  const auto none = get("/api/exercise");
+  EXPECT_TRUE(none["name"].is_null());
+  EXPECT_TRUE(none["steps"].empty());
+}
+
+TEST_F(ExerciseApi, BadSelectionsAreRefusedWithAReason) {
+  EXPECT_EQ(status(p().post("/api/exercise", {{"name", "no-such"}})), 404);
+  EXPECT_EQ(status(p().post("/api/exercise", {{"name", "../CMakeLists"}})), 400);
+  EXPECT_EQ(status(p().post("/api/exercise", {{"name", 3}})), 400);
+  EXPECT_EQ(status(p().http().Post("/api/exercise", "[", "application/json")), 400);
+  const auto r = p().post("/api/exercise", {{"name", "no-such"}});
+  EXPECT_NE(LivePlant::json_of(r)["error"].get<std::string>().find("no exercise 'no-such'"), std::string::npos);
+  EXPECT_TRUE(get("/api/exercise")["name"].is_null());  // nothing changed
+}
+
+TEST_F(ExerciseApi, NmtSolved) {
+  select("nmt");
+  nmt("start", "dsv");
+  EXPECT_EQ(done_steps(), 1u);
+  const auto e = get("/api/exercise");
+  EXPECT_GT(e["steps"][0]["t_us"].get<std::int64_t>(), 600000);
+  EXPECT_TRUE(e["steps"][1]["t_us"].is_null());
+  EXPECT_EQ(e["current"], 1);
+  nmt("stop", "dsv");
+  nmt("pre_operational", "dsv");
+  EXPECT_EQ(done_steps(), 3u);
+  nmt("reset_communication", "dsv");
+  p().run_ms(100);
+  EXPECT_EQ(done_steps(), 4u);
+  nmt("start", 0);
+  expect_all_done();
+}
+
+TEST_F(ExerciseApi, NmtStartingTheWrongNodeLeavesTheStepOpen) {
+  select("nmt");
+  nmt("start", "md2");
+  nmt("stop", "dsv");
+  EXPECT_EQ(done_steps(), 0u);
+  EXPECT_EQ(get("/api/exercise")["current"], 0);
+}
+
+TEST_F(ExerciseApi, HeartbeatSolved) {
+  select("heartbeat");
+  sdo("dsv", 0x1017, 0, 100);
+  p().run_ms(250);
+  EXPECT_EQ(done_steps(), 1u);
+  sdo("wdga", 0x1016, 1, 0x000201F4);
+  p().run_ms(250);
+  EXPECT_EQ(done_steps(), 2u);
+  const auto f = p().post("/api/faults", {{"drop", {{"id", "0x702"}}}});
+  ASSERT_EQ(status(f), 200);
+  p().run_ms(1000);
+  EXPECT_EQ(done_steps(), 3u);
+  ASSERT_EQ(status(p().http().Delete(("/api/faults/" + std::to_string(LivePlant::json_of(f)["id"].get<int>())).c_str())), 200);
+  p().run_ms(500);
+  expect_all_done();
+}
+
+TEST_F(ExerciseApi, HeartbeatWatchingTheWrongNodeLeavesTheStepOpen) {
+  select("heartbeat");
+  sdo("dsv", 0x1017, 0, 100);
+  p().run_ms(250);
+  sdo("wdga", 0x1016, 1, 0x000301F4);  // node 3, the MD2, which sends no heartbeat
+  p().run_ms(1000);
+  EXPECT_EQ(done_steps(), 1u);
+}
+
+TEST_F(ExerciseApi, SelectingAgainStartsOver) {
+  select("nmt");
+  nmt("start", "dsv");
+  EXPECT_EQ(done_steps(), 1u);
+  select("nmt");
+  EXPECT_EQ(done_steps(), 0u);
+}
+
+}  // namespace
