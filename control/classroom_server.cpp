@@ -111,7 +111,8 @@ struct ClassroomServer::Impl {
     s["clock"] = clock.status == 200 ? body_json(clock) : json();
     // The exercise endpoints (docs/exercises.md): null while the seat has none selected.
     const auto exercise = ask(k, "GET", "/api/exercise");
-    s["exercise"] = exercise.status == 200 ? body_json(exercise) : json();
+    auto progress = exercise.status == 200 ? body_json(exercise) : json();
+    s["exercise"] = progress.is_object() && progress.contains("name") && progress["name"].is_string() ? progress : json();
     const auto& late = seat.lateness();
     s["lateness_us"] = late.count() == 0 ? json()
                                          : json{{"ticks", late.count()},

@@ -3,7 +3,7 @@ token or with another seat's, the trainer's read-only view of a seat, seats that
 (NMT start on seat 1 leaves seat 2 in PRE-OPERATIONAL), the trainer's endpoints, the Host check,
 and the command line's errors (seat count, non-loopback address, a SocketCAN bus, a matrix).
 
-    /usr/bin/python3 classroom_cli_test.py --vplant BIN --scenario scenarios/reference-plant.yaml
+    /usr/bin/python3 classroom_cli_test.py --vplant BIN --scenario scenarios/reference-plant.yaml --exercises exercises
 """
 import argparse
 import http.client
@@ -167,6 +167,56 @@ class TwoSeats(unittest.TestCase):
         self.assertIn("Host", body["error"])
 
 
+class Exercises(unittest.TestCase):
+    """The trainer gives every seat the same exercise; a trainee's steps are checked on their seat only."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.room = Classroom(2, ["--exercises", ARGS.exercises])
+        cls.port = cls.room.port
+        cls.t = cls.room.tokens
+
+    @classmethod
+    def tearDownClass(cls):
+        rc, out = cls.room.stop()
+        assert rc == 0, out
+
+    def progress(self, seat):
+        status, _, body = request(self.port, "GET", f"/seats/{seat}/api/exercise", token=self.t[seat])
+        self.assertEqual(status, 200, body)
+        return [step["done"] for step in body["steps"]]
+
+    def test_steps_are_done_on_the_seat_that_did_them_only(self):
+        status, _, body = request(self.port, "GET", "/seats/1/api/exercises", token=self.t[1])
+        self.assertIn("nmt", body)
+        status, _, body = request(self.port, "POST", "/api/seats/exercise", token=self.t[0], body={"name": "nmt"})
+        self.assertEqual(status, 200, body)
+        self.assertEqual([(a["seat"], a["status"]) for a in body["seats"]], [(1, 200), (2, 200)])
+        status, _, body = request(self.port, "POST", "/api/seats/exercise", token=self.t[0], body={"name": "nope"})
+        self.assertEqual(status, 404, body)
+        deadline = time.monotonic() + 10
+        while nmt_states(self.port, 1, self.t[1])["dsv"] != "PRE-OPERATIONAL":
+            self.assertLess(time.monotonic(), deadline, "the DSV of seat 1 did not boot")
+            time.sleep(0.05)
+        for command, state in (("start", "OPERATIONAL"), ("stop", "STOPPED"), ("pre_operational", "PRE-OPERATIONAL")):
+            status, _, body = request(self.port, "POST", "/seats/1/api/nmt", token=self.t[1],
+                                      body={"command": command, "node": "dsv"})
+            self.assertEqual(status, 200, body)
+            while nmt_states(self.port, 1, self.t[1])["dsv"] != state:
+                self.assertLess(time.monotonic(), deadline, f"the DSV of seat 1 is not {state}")
+                time.sleep(0.05)
+        while self.progress(1)[:3] != [True, True, True]:
+            self.assertLess(time.monotonic(), deadline, f"seat 1's steps: {self.progress(1)}")
+            time.sleep(0.05)
+        self.assertEqual(self.progress(2), [False] * len(self.progress(2)))
+        # The overview shows the same.
+        status, _, body = request(self.port, "GET", "/api/seats", token=self.t[0])
+        seats = {s["seat"]: s["exercise"] for s in body["seats"]}
+        self.assertEqual(seats[1]["name"], "nmt")
+        self.assertEqual([st["done"] for st in seats[1]["steps"]][:3], [True, True, True])
+        self.assertFalse(any(st["done"] for st in seats[2]["steps"]))
+
+
 class CommandLine(unittest.TestCase):
     def run_vplant(self, *args, scenario=None):
         p = subprocess.run([ARGS.vplant, "classroom", scenario or ARGS.scenario, *args],
@@ -200,5 +250,6 @@ if __name__ == "__main__":
     parser = argparse.ArgumentParser()
     parser.add_argument("--vplant", required=True)
     parser.add_argument("--scenario", required=True)
+    parser.add_argument("--exercises", required=True)
     ARGS, rest = parser.parse_known_args()
     unittest.main(argv=[sys.argv[0], *rest], verbosity=2)

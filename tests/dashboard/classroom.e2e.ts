@@ -1,7 +1,8 @@
 // Browser test of `vplant classroom` (docs/classroom.md) in Debian's headless Chromium (driven by
 // playwright-core): two seats and the trainer. The trainee opens seat 1's link (the token becomes
 // a cookie) and starts the plant by NMT from the page; the trainer's overview, opened from its own
-// link, shows seat 1's nodes OPERATIONAL and seat 2's PRE-OPERATIONAL; the trainer's read-only
+// link, shows seat 1's nodes OPERATIONAL and seat 2's PRE-OPERATIONAL, and after giving every seat
+// the `nmt` exercise, seat 1's first step done and none of seat 2's; the trainer's read-only
 // view of seat 2 is refused a command; seat 2's page is closed to seat 1's cookie. Screenshots of
 // the overview and a seat at 1366×768 and 1920×1080 go to --screenshots DIR (classroom-*.png).
 //   node classroom.e2e.cjs --vplant BIN --scenario FILE --screenshots DIR
@@ -151,6 +152,16 @@ test('the trainee starts seat 1; the overview shows it, seat 2 stays PRE-OPERATI
   await s1.getByTestId('node-vtvpcd').filter({ hasText: 'OPERATIONAL' }).filter({ hasNotText: 'PRE-' }).waitFor();
   for (const node of ['vtvpcd', 'dsv', 'md2', 'hlt', 'wdga'])
     assert.match((await s2.getByTestId(`node-${node}`).textContent()) ?? '', /PRE-OPERATIONAL/);
+});
+
+test('the trainer gives every seat the nmt exercise; the overview shows each seat its own progress', async () => {
+  await overview.getByTestId('exercise-choice').selectOption('nmt');
+  await overview.getByTestId('give-exercise').click();
+  await overview.getByTestId('messages').filter({ hasText: 'Every seat has the exercise "nmt"' }).waitFor();
+  // Seat 1's DSV is OPERATIONAL already: its first step ("Start the DSV") is done; seat 2 has none.
+  const s1 = overview.getByTestId('seat-1'), s2 = overview.getByTestId('seat-2');
+  await s1.getByTestId('progress').filter({ hasText: '1/5 steps done' }).waitFor();
+  await s2.getByTestId('progress').filter({ hasText: '0/5 steps done' }).waitFor();
   await shots(overview, 'overview');
   await shots(seat1, 'seat1');
 });

@@ -17,6 +17,7 @@
 #include "engine/runner.h"
 #include "engine/scenario_cases.h"
 #include "tools/vplant/commands.h"
+#include "tools/vplant/exercise_folder.h"
 #include "tools/vplant/exit_codes.h"
 #include "tools/vplant/stop_signals.h"
 
@@ -33,6 +34,7 @@ struct ClassroomArgs {
   bool ui_allow_remote = false;
   bool realtime = false;
   double ui_speed = 1.0;
+  std::string exercises;  ///< "" = the shipped folder
 };
 
 // The runs a signal stops (a handler may only touch atomics).
@@ -75,6 +77,7 @@ int run(const ClassroomArgs& a) {
   ui.clock.start_paused = false;  // a trainee's plant is live from the start
   ui.clock.speed = a.ui_speed;
   ui.out = nullptr;  // the classroom prints the links
+  ui.exercises_dir = a.exercises.empty() ? default_exercises_dir() : a.exercises;
   install_stop_signals(stop_every_seat);
 
   std::vector<scenario::Scenario> scenarios;
@@ -157,6 +160,9 @@ Runner add_classroom_command(CLI::App& app) {
       ->check([](const std::string& v) {
         return std::stod(v) == 0 || std::stod(v) >= 0.001 ? std::string() : std::string("0 or 0.001..1000");
       });
+  app.add_option("--exercises", a->exercises,
+                 "the folder of exercise files every seat offers (docs/exercises.md; default: the shipped exercises)")
+      ->check(CLI::ExistingDirectory);
   return [a] { return run(*a); };
 }
 

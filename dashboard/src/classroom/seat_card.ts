@@ -22,7 +22,7 @@ function nodeChip(node: SeatSummary['nodes'][number]): HTMLElement {
 
 function progress(s: SeatSummary): HTMLElement {
   const ex = s.exercise;
-  if (!ex) return el('p', { class: 'muted', 'data-testid': 'progress' }, 'no exercise selected');
+  if (!ex || !ex.name) return el('p', { class: 'muted', 'data-testid': 'progress' }, 'no exercise selected');
   const done = ex.steps.filter((st) => st.done).length;
   return el(
     'div',
