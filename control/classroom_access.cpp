@@ -140,6 +140,13 @@ http::Response ClassroomAccess::check(const http::Request& req) const {
   const auto seat = seat_of(req.path);
   const bool reads = req.method == "GET" || req.method == "HEAD";
   const std::string area = !seat ? "this page" : *seat == 0 ? "the trainer's overview" : "seat " + std::to_string(*seat);
+  // "/seats/K" (a link typed without its slash): the seat cookie's path is "/seats/K/", so it is not
+  // sent here; the redirect reveals nothing.
+  if (seat && *seat > 0 && reads && !req.has_param("token") && req.path.find('/', 7) == std::string::npos) {
+    res.status = 308;
+    res.headers.emplace_back("Location", req.path + "/");
+    return res;
+  }
   // A `?token=` link: opens the page once, then the cookie carries the token (HttpOnly: the page's
   // scripts never see it; SameSite=Strict: another site cannot make the browser use it).
   if (req.has_param("token")) {

@@ -56,6 +56,7 @@ struct ClassroomServer::Impl {
       if (req.path.find('/', 7) == std::string::npos) {  // "/seats/K": the page's relative links need "/seats/K/"
         res.status = 308;
         res.headers.emplace_back("Location", req.path + "/");
+        res.body = http::error_body("the seat's page is at " + req.path + "/");
         return;
       }
       req.path = seat_path(req.path);

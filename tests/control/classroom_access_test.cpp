@@ -114,6 +114,15 @@ TEST(ClassroomAccess, TheTrainerOpensEverythingButOnlyLooksAtSeatsFromTheBrowser
   EXPECT_EQ(room.check(with_bearer(request("GET", "/seats/3/"), kSeat1)).status, 401);
 }
 
+TEST(ClassroomAccess, ASeatWithoutItsSlashRedirectsToItsPage) {
+  const auto room = two_seats();
+  const auto res = room.check(request("GET", "/seats/2"));
+  EXPECT_EQ(res.status, 308);
+  EXPECT_EQ(header(res, "Location"), "/seats/2/");
+  EXPECT_EQ(room.check(request("POST", "/seats/2")).status, 401);
+  EXPECT_EQ(room.check(request("GET", "/seats/3")).status, 401);
+}
+
 TEST(ClassroomAccess, ATokenLinkBecomesAStrictHttpOnlyCookie) {
   const auto room = two_seats();
   auto link = request("GET", "/seats/1");
