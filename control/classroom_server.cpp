@@ -3,9 +3,6 @@
 #include <nlohmann/json.hpp>
 
 #include "control/http_server.h"
-#ifdef VPLANT_HAVE_DASHBOARD
-#include "dashboard/assets.h"
-#endif
 
 namespace control {
 
@@ -71,21 +68,12 @@ struct ClassroomServer::Impl {
     serve_overview(req, res);
   }
 
-  static void serve_overview(const http::Request& req, http::Response& res) {
-#ifdef VPLANT_HAVE_DASHBOARD
-    const std::string path = req.path == "/" ? "/classroom/index.html" : req.path;
-    if (path.rfind("/classroom/", 0) == 0)
-      if (const auto* asset = dashboard::find_asset(path)) {
-        res.status = 200;
-        res.type = std::string(asset->content_type);
-        res.body = std::string(asset->body);
-        return;
-      }
-    reply(res, 404, {{"error", "no such file: " + req.path}});
-#else
-    (void)req;
-    reply(res, 404, {{"error", "dashboard not built (this build has the API only: see docs/api.md)"}});
-#endif
+  /// The overview's files: the page's built files hold them under /classroom/ (any control plane
+  /// serves them; seat 1's does).
+  void serve_overview(http::Request& req, http::Response& res) {
+    if (req.path == "/") req.path = "/classroom/index.html";
+    if (req.path.rfind("/classroom/", 0) != 0) return reply(res, 404, {{"error", "no such file: " + req.path}});
+    seats.front()->plane().handle(req, res);
   }
 
   /// A request to seat k's control plane from the overview's endpoints.

@@ -9,7 +9,7 @@ export class ApiError extends Error {
 }
 
 /** An API path ("/api/...") relative to the page's folder. */
-const relative = (path: string): string => path.replace(/^\//, '');
+export const relative = (path: string): string => path.replace(/^\//, '');
 
 async function call<T>(method: string, path: string, body?: unknown): Promise<T> {
   const res = await fetch(relative(path), {

@@ -162,6 +162,8 @@ test('the trainer gives every seat the nmt exercise; the overview shows each sea
   const s1 = overview.getByTestId('seat-1'), s2 = overview.getByTestId('seat-2');
   await s1.getByTestId('progress').filter({ hasText: '1/5 steps done' }).waitFor();
   await s2.getByTestId('progress').filter({ hasText: '0/5 steps done' }).waitFor();
+  // The trainee's page (under /seats/1/) shows the exercise with its first step done.
+  await seat1.getByTestId('exercise-step-1').and(seat1.locator('[data-status="done"]')).waitFor();
   await shots(overview, 'overview');
   await shots(seat1, 'seat1');
 });
