@@ -40,6 +40,8 @@ class ClassroomSeat final : public scenario::RunExtension {
   void attach(const scenario::RunContext& context) override;
   bool before_tick(bool end_reached) override { return plane_.before_tick(end_reached); }
   void detach() override { plane_.detach(); }
+  /// POST /seats/K/api/restart: the runner rebuilds this seat at t = 0 and attaches again.
+  bool wants_restart() override { return plane_.wants_restart(); }
 
  private:
   ControlPlane plane_;

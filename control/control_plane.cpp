@@ -12,12 +12,14 @@
 #include "control/event_hub.h"
 #include "control/http_server.h"
 #include "control/json_views.h"
+#include "control/pdo_view.h"
 #include "control/server_thread_priority.h"
 #include "devices/canopen/nmt_command.h"
 #include "devices/canopen/sdo_abort.h"
 #include "engine/fault_codec.h"
 #include "engine/fault_injector.h"
 #include "engine/master_monitor.h"
+#include "engine/rpdo_frame.h"
 #include "engine/scenario.h"
 #include "engine/value_codec.h"
 #include "engine/yaml_fields.h"
@@ -40,6 +42,10 @@ constexpr auto kCommandTimeout = std::chrono::milliseconds(2000);
 // GET /api/findings answers at most this many findings (built between ticks: keep it short).
 constexpr std::size_t kFindingsPage = 100;
 constexpr auto kSdoWait = std::chrono::milliseconds(5000);
+// POST /api/sync: a minute between SYNCs is far beyond any cycle a lesson shows.
+constexpr std::int64_t kMaxSyncPeriodMs = 60000;
+// POST /api/restart: the rebuild (dictionaries, EDS files, plant) takes well under a second.
+constexpr auto kRestartWait = std::chrono::seconds(10);
 
 /// A client error: answered as {"error": reason} with its status, nothing changed.
 struct HttpError {
@@ -131,20 +137,6 @@ const char* access_name(canopen::Access a) {
     case canopen::Access::Const: return "const";
   }
   return "rw";
-}
-
-/// A dictionary value as JSON: numbers for numeric types, text for visible strings, hex else.
-json value_json(canopen::DataType type, const std::vector<std::uint8_t>& bytes) {
-  using canopen::DataType;
-  if (type == DataType::VisibleString) {
-    std::string s(bytes.begin(), bytes.end());
-    while (!s.empty() && s.back() == '\0') s.pop_back();
-    return s;
-  }
-  if (canopen::is_variable_length(type) || bytes.size() != canopen::type_size(type)) return hex_string(bytes.data(), bytes.size());
-  if (canopen::is_real(type)) return scenario::decode_number(type, bytes);
-  if (canopen::is_signed_integer(type)) return canopen::decode_signed(bytes);
-  return canopen::decode_unsigned(bytes);
 }
 
 std::string abort_hex(std::uint32_t code) {
@@ -406,10 +398,11 @@ struct ControlPlane::Server {
         if (!v || *v < 0) throw HttpError{400, "since must be a finding count (a non-negative integer)"};
         since = static_cast<std::size_t>(*v);
       }
-      const auto* m = monitor;
       res.status = 200;
       res.type = "application/json";
-      res.body = call<std::string>([m, since](const scenario::RunContext&) {
+      // The run's monitor as the command finds it (a restart replaces it).
+      res.body = call<std::string>([since](const scenario::RunContext& c) {
+        const auto* m = c.master_monitor;
         return scenario::findings_json(m->findings(), m->rules(), m->bus_names(), since, kFindingsPage);
       });
     }));
@@ -420,6 +413,13 @@ struct ControlPlane::Server {
     router.add("POST", "/api/clock", guarded([this](const http::Request& req, http::Response& res) { clock_control(req, res); }));
     router.add("GET", "/api/events", [this](const http::Request& req, http::Response& res) { events(req, res); });
     cp.exercises_.add_routes(router);
+    // The controls a lesson needs (docs/api.md, "Lesson controls").
+    router.add("GET", "/api/sync", guarded([this](const http::Request& req, http::Response& res) { sync_state(req, res); }));
+    router.add("POST", "/api/sync", guarded([this](const http::Request& req, http::Response& res) { sync_control(req, res); }));
+    router.add("GET", R"(/api/nodes/([^/]+)/pdos)", guarded([this](const http::Request& req, http::Response& res) { pdos(req, res); }));
+    router.add("POST", R"(/api/nodes/([^/]+)/rpdo)", guarded([this](const http::Request& req, http::Response& res) { rpdo(req, res); }));
+    router.add("POST", "/api/events/node", guarded([this](const http::Request& req, http::Response& res) { select_node(req, res); }));
+    router.add("POST", "/api/restart", guarded([this](const http::Request&, http::Response& res) { restart(res); }));
 
   }
 
@@ -753,6 +753,118 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}});
   }
 
+  // ---- lesson controls ------------------------------------------------------------------------
+  std::size_t bus_of_request(const std::string& name) const {
+    if (name.empty()) return 0;
+    const auto b = bus_index.find(name);
+    if (b == bus_index.end()) throw HttpError{404, "no bus '" + name + "'"};
+    return b->second;
+  }
+
+  json sync_json(std::size_t bus) {
+    return call<json>([this, bus](const scenario::RunContext&) {
+      const auto& p = cp.bridge_.sync(bus);
+      return json{{"bus", bus_names[bus]},
+                  {"period_ms", p.period.count() / 1000},
+                  {"counter_overflow", p.overflow}};
+    });
+  }
+
+  void sync_state(const http::Request& req, http::Response& res) {
+    reply(res, 200, sync_json(bus_of_request(req.param("bus"))));
+  }
+
+  void sync_control(const http::Request& req, http::Response& res) {
+    const auto body = parse_body(req);
+    const auto bus = bus_of_request(string_field(body, "bus", ""));
+    const auto period_ms = *integer_field(body, "period_ms", 0, kMaxSyncPeriodMs);
+    const auto overflow = static_cast<std::uint8_t>(*integer_field(body, "counter_overflow", 0, 240, 0));
+    if (overflow == 1) throw HttpError{400, "field 'counter_overflow' must be 0 (no counter) or 2..240 (CiA 301 1019h)"};
+    need_run();
+    const auto tick_us = cp.bridge_.clock().tick_us;
+    if (period_ms > 0 && period_ms * 1000 < tick_us)
+      throw HttpError{400, "field 'period_ms' is shorter than the tick (" + std::to_string(tick_us) + " us)"};
+    call<bool>([this, bus, period_ms, overflow](const scenario::RunContext&) {
+      cp.bridge_.set_sync(bus, sim::milliseconds(period_ms), overflow);
+      return true;
+    });
+    reply(res, 200, sync_json(bus));
+  }
+
+  void pdos(const http::Request& req, http::Response& res) {
+    const auto i = node(req.matches[1]);
+    const auto configs = call<std::vector<PdoConfig>>(
+        [i](const scenario::RunContext& c) { return read_pdo_configs(c.world.nodes()[i].device->node().od()); });
+    reply(res, 200, pdos_json(configs, catalog, i));
+  }
+
+  void rpdo(const http::Request& req, http::Response& res) {
+    const auto i = node(req.matches[1]);
+    const auto body = parse_body(req);
+    const int pdo = static_cast<int>(*integer_field(body, "pdo", 1, 512));
+    if (!body.contains("values") || !body["values"].is_object())
+      throw HttpError{400, "field 'values' must be an object of mapped objects and their values, e.g. {\"6040:00\": 15}"};
+    std::vector<scenario::ParameterOverride> values;
+    for (const auto& [key, v] : body["values"].items()) {
+      const auto address = parse_object_key(key);
+      if (!address) throw HttpError{400, "'" + key + "' is not an object address (INDEX:SUB in hex, e.g. 6040:00)"};
+      scenario::ParameterOverride o;
+      o.index = address->first;
+      o.sub = address->second;
+      if (v.is_number_integer()) {
+        if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX))
+          throw HttpError{400, key + ": value out of range"};
+        o.value.integer = v.get<std::int64_t>();
+      } else if (v.is_number()) {
+        o.value.kind = scenario::Literal::Kind::Real;
+        o.value.real = v.get<double>();
+      } else if (v.is_string()) {
+        o.value.kind = scenario::Literal::Kind::Text;
+        o.value.text = v.get<std::string>();
+      } else {
+        throw HttpError{400, key + ": the value must be a number or a string"};
+      }
+      values.push_back(std::move(o));
+    }
+    // By value: a command that waits past the timeout still runs later.
+    const auto r = call<std::pair<std::string, std::optional<sim::CanFrame>>>(
+        [this, i, pdo, name = node_names[i], values = std::move(values)](const scenario::RunContext& c) -> std::pair<std::string, std::optional<sim::CanFrame>> {
+          auto& n = c.world.nodes()[i];
+          const auto built = scenario::build_rpdo(n.device->node().od(), name, pdo, values);
+          if (!built.frame)
+            return {"RPDO " + std::to_string(pdo) + " of " + name + ": " + built.actual + " (expected " + built.expected + ")",
+                    std::nullopt};
+          if (!cp.bridge_.send_frame(static_cast<std::size_t>(n.bus), *built.frame))
+            return {"the bus refused the frame: the control plane's transmit queue is full: retry later", built.frame};
+          return {{}, built.frame};
+        });
+    if (!r.first.empty()) throw HttpError{r.second ? 503 : 400, r.first};
+    const auto& f = *r.second;
+    reply(res, 200, {{"ok", true}, {"id", f.id}, {"data", hex_string(f.data.data(), f.dlc)}});
+  }
+
+  /// The node whose dictionary a stream carries ("od" deltas): {"stream": ID, "node": NAME|null}.
+  void select_node(const http::Request& req, http::Response& res) {
+    const auto body = parse_body(req);
+    const auto id = static_cast<std::uint64_t>(*integer_field(body, "stream", 1, INT64_MAX));
+    if (!body.contains("node")) throw HttpError{400, "missing field 'node' (a node's name, or null for none)"};
+    int selected = -1;
+    if (body["node"].is_string()) selected = static_cast<int>(node(body["node"].get<std::string>()));
+    else if (!body["node"].is_null()) throw HttpError{400, "field 'node' must be a node's name or null"};
+    need_run();
+    if (!hub->select_node(id, selected))
+      throw HttpError{404, "no stream " + std::to_string(id) + " that may choose a node (a shared read-only stream may not)"};
+    reply(res, 200, {{"ok", true}});
+  }
+
+  void restart(http::Response& res) {
+    need_run();
+    auto done = cp.bridge_.request_restart();
+    if (done.wait_for(kRestartWait) != std::future_status::ready) throw HttpError{504, "the scenario did not restart in time"};
+    if (!done.get()) throw HttpError{503, "the run has ended"};
+    reply(res, 200, {{"ok", true}, {"clock", clock_json()}});
+  }
+
   void events(const http::Request& req, http::Response& res) {
     try {
       need_run();
@@ -762,8 +874,11 @@ struct ControlPlane::Server {
         json q = {{"rate", req.param("rate")}};
         rate = static_cast<double>(*integer_field(q, "rate", 1, 50));
       }
-      auto client = hub->open(list, rate);
-      if (!client) throw HttpError{503, "too many event streams (at most " + std::to_string(cp.options_.max_streams) + ")"};
+      const int selected = req.has_param("node") ? static_cast<int>(node(req.param("node"))) : -1;
+      auto client = hub->open(list, rate, selected);
+      if (!client)
+        throw HttpError{503, "too many event streams (at most " + std::to_string(cp.options_.max_streams) + ", and " +
+                                 std::to_string(EventHub::kMaxSharedClients) + " shared read-only ones)"};
       res.status = 200;
       res.type = "text/event-stream";
       res.headers.emplace_back("Cache-Control", "no-cache");
@@ -815,6 +930,7 @@ void ControlPlane::attach(const scenario::RunContext& context) {
   exercises_.attach(context);  // first: a bad --exercise ends the run before anything serves
   bridge_.attach(context);
   auto& s = *server_;
+  if (s.hub) return;  // a restart (POST /api/restart): the same scenario, server and streams
   s.build_static(context);
   s.hub = std::make_unique<EventHub>(bridge_, s.catalog, StreamTopology{s.bus_names, s.node_names, s.node_bus},
                                      options_.max_streams);

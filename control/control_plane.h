@@ -56,6 +56,7 @@ class ControlPlane final : public scenario::RunExtension {
     return bridge_.before_tick(end_reached);
   }
   void detach() override;
+  bool wants_restart() override { return bridge_.wants_restart(); }
 
   SimBridge& bridge() { return bridge_; }
 

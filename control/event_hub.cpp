@@ -1,6 +1,11 @@
 #include "control/event_hub.h"
 
+#include <algorithm>
+
 #include "control/json_views.h"
+#include "control/pdo_view.h"
+#include "engine/world.h"
+#include "sim/scheduler.h"
 #include "control/server_thread_priority.h"
 
 namespace control {
@@ -9,6 +14,11 @@ namespace {
 constexpr auto kBatchPeriod = std::chrono::milliseconds(50);
 constexpr auto kSnapshotPeriod = std::chrono::milliseconds(20);  // 50 Hz
 constexpr std::size_t kMaxBacklog = 4 << 20;        // bytes per client
+constexpr std::size_t kMaxSharedBacklog = 256 << 10;  // bytes per shared (read-only) client
+// The selected node's dictionary and the live faults: 5 times a wall second is what a table
+// on a page shows; reading them costs the scheduler one command.
+constexpr auto kLiveTablePeriod = std::chrono::milliseconds(200);
+constexpr auto kLiveTableWait = std::chrono::milliseconds(150);
 // Frames decoded per batch: 40 000 a second, more than two 1 Mbit/s buses carry; beyond (full
 // virtual speed) the stream is a sample.
 constexpr std::size_t kMaxFramesPerBatch = 2048;
@@ -58,11 +68,19 @@ void EventHub::stop() {
   if (thread_.joinable()) thread_.join();
 }
 
-std::shared_ptr<EventHub::Client> EventHub::open(std::vector<std::size_t> signals, double rate_hz) {
+std::shared_ptr<EventHub::Client> EventHub::open(std::vector<std::size_t> signals, double rate_hz, int node) {
   std::lock_guard lk(mu_);
-  if (stopping_ || clients_.size() >= max_clients_) return nullptr;
+  if (stopping_) return nullptr;
+  const auto shared = static_cast<std::size_t>(std::count_if(clients_.begin(), clients_.end(), [](const auto& c) { return c->shared_; }));
   auto c = std::make_shared<Client>();
-  c->signals_ = std::move(signals);
+  c->id_ = ++next_id_;
+  if (clients_.size() - shared >= max_clients_) {
+    if (shared >= kMaxSharedClients) return nullptr;
+    c->shared_ = true;
+  } else {
+    c->signals_ = std::move(signals);
+    c->node_ = node;
+  }
   c->period_us_ = static_cast<std::int64_t>(1e6 / rate_hz);
   clients_.push_back(c);
   bridge_.add_listener();
@@ -76,6 +94,86 @@ void EventHub::close(const std::shared_ptr<Client>& client) {
     clients_.erase(it);
     bridge_.remove_listener();
     return;
+  }
+}
+
+bool EventHub::select_node(std::uint64_t id, int node) {
+  std::lock_guard lk(mu_);
+  for (auto& c : clients_) {
+    if (c->id_ != id) continue;
+    if (c->shared_) return false;
+    std::lock_guard clk(c->mu_);
+    c->node_ = node;
+    c->od_sent_ = false;  // the new node's whole dictionary first
+    return true;
+  }
+  return false;
+}
+
+void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, std::vector<std::string>& out) {
+  std::vector<int> nodes;
+  for (const auto& c : clients) {
+    std::lock_guard lk(c->mu_);
+    if (c->node_ >= 0 && std::find(nodes.begin(), nodes.end(), c->node_) == nodes.end()) nodes.push_back(c->node_);
+  }
+  struct Tables {
+    std::int64_t t_us = 0;
+    std::vector<std::vector<std::vector<std::uint8_t>>> values;  ///< per node in `nodes`, per catalog entry
+    nlohmann::json faults = nlohmann::json::array();
+  };
+  const auto& catalog = catalog_;
+  auto& bridge = bridge_;
+  auto tables = bridge_.call<Tables>(
+      [nodes, &catalog, &bridge](const scenario::RunContext& c) {
+        Tables t;
+        t.t_us = c.scheduler.now().time_since_epoch().count();
+        for (const int n : nodes) {
+          const auto& od = c.world.nodes()[static_cast<std::size_t>(n)].device->node().od();
+          auto& v = t.values.emplace_back();
+          for (const auto& e : catalog.entries(static_cast<std::size_t>(n))) {
+            const auto* entry = od.entry(e.index, e.sub);
+            v.push_back(entry ? entry->value : std::vector<std::uint8_t>{});
+          }
+        }
+        for (const auto& f : bridge.live_faults()) {
+          if (f.until_us >= 0 && f.until_us <= t.t_us) continue;  // its `for:` ran out
+          nlohmann::json j = {{"id", f.id}, {"summary", f.summary}, {"since_t_us", f.since_us}};
+          if (f.until_us >= 0) j["until_t_us"] = f.until_us;
+          t.faults.push_back(std::move(j));
+        }
+        return t;
+      },
+      kLiveTableWait);
+  if (!tables) return;  // the scheduler is busy or the run ended: next time
+  const std::string faults = tables->faults.dump();
+  for (std::size_t i = 0; i < clients.size(); ++i) {
+    auto& c = *clients[i];
+    std::lock_guard lk(c.mu_);
+    if (c.faults_sent_ != faults) {
+      c.faults_sent_ = faults;
+      append_event(out[i], "faults", faults);
+    }
+    if (c.node_ < 0) continue;
+    const auto k = static_cast<std::size_t>(std::find(nodes.begin(), nodes.end(), c.node_) - nodes.begin());
+    if (k >= tables->values.size()) continue;  // selected since the read
+    const auto& values = tables->values[k];
+    const auto& entries = catalog_.entries(static_cast<std::size_t>(c.node_));
+    const bool full = !c.od_sent_;
+    if (full) c.od_last_.assign(values.size(), {});
+    nlohmann::json changed = nlohmann::json::object();
+    for (std::size_t e = 0; e < values.size() && e < entries.size(); ++e) {
+      if (!full && values[e] == c.od_last_[e]) continue;
+      c.od_last_[e] = values[e];
+      changed[object_key(entries[e].index, entries[e].sub)] = value_json(entries[e].type, values[e]);
+    }
+    c.od_sent_ = true;
+    if (!full && changed.empty()) continue;
+    append_event(out[i], "od",
+                 nlohmann::json{{"node", topo_.node_names[static_cast<std::size_t>(c.node_)]},
+                                {"t_us", tables->t_us},
+                                {"full", full},
+                                {"values", std::move(changed)}}
+                     .dump());
   }
 }
 
@@ -186,10 +284,26 @@ void EventHub::batch() {
       nlohmann::json{{"t_us", clock.t_us}, {"paused", clock.paused}, {"speed", clock.speed}, {"end_reached", clock.end_reached}}
           .dump();
 
+  // A restart (POST /api/restart): the page drops what it drew of the old run.
+  const auto restarts = bridge_.restarts();
+  const bool restarted = restarts != restarts_seen_;
+  restarts_seen_ = restarts;
+
+  std::vector<std::string> tables(clients.size());
+  if (const auto now = std::chrono::steady_clock::now(); now >= next_tables_) {
+    next_tables_ = now + kLiveTablePeriod;
+    live_tables(clients, tables);
+  }
+
   const auto& names = bridge_.signals();
   for (std::size_t i = 0; i < clients.size(); ++i) {
     auto& c = *clients[i];
     std::string out;
+    if (!c.greeted_) {
+      const auto node = c.node_ >= 0 ? nlohmann::json(topo_.node_names[static_cast<std::size_t>(c.node_)]) : nlohmann::json();
+      append_event(out, "hello", nlohmann::json{{"stream", c.id_}, {"shared", c.shared_}, {"node", node}}.dump());
+    }
+    if (restarted && c.greeted_) append_event(out, "restart", nlohmann::json{{"restarts", restarts}, {"t_us", clock.t_us}}.dump());
     if (!c.greeted_ || nodes_changed) append_event(out, "nodes", nodes_event_);
     if (!c.greeted_ || clock_changed) append_event(out, "clock", clock_event);
     c.greeted_ = true;
@@ -198,10 +312,11 @@ void EventHub::batch() {
       for (std::size_t k = 0; k < c.signals_.size(); ++k) values[names[c.signals_[k]].name] = per_client[i].second[k];
       append_event(out, "signals", nlohmann::json{{"t_us", per_client[i].first}, {"values", values}}.dump());
     }
+    out += tables[i];
     std::lock_guard lk(c.mu_);
     std::uint64_t lost = dropped;
     if (!frames.empty()) {
-      if (c.outbox_.size() + frames.size() > kMaxBacklog) lost += n;
+      if (c.outbox_.size() + frames.size() > (c.shared_ ? kMaxSharedBacklog : kMaxBacklog)) lost += n;
       else append_event(out, "frames", frames);
     }
     if (lost > 0) append_event(out, "dropped", nlohmann::json{{"frames", lost}}.dump());

@@ -44,6 +44,12 @@ class EventHub {
     std::int64_t next_sample_us_ = 0;
     std::uint64_t dropped_ = 0;  ///< frames this client lost (backlog full)
     bool greeted_ = false;
+    std::uint64_t id_ = 0;
+    bool shared_ = false;  ///< beyond max_clients: the shared read-only stream, a bounded backlog
+    int node_ = -1;        ///< the node whose dictionary this client receives (-1: none)
+    bool od_sent_ = false;
+    std::vector<std::vector<std::uint8_t>> od_last_;  ///< what it was sent, per catalog entry
+    std::string faults_sent_;
   };
 
   EventHub(SimBridge& bridge, const DictionaryCatalog& catalog, StreamTopology topology, std::size_t max_clients);
@@ -53,15 +59,23 @@ class EventHub {
 
   void start();
   void stop();
-  /// A new stream for these signals (indices into SimBridge::signals()) at `rate_hz`; nullptr
-  /// when max_clients streams are open.
-  std::shared_ptr<Client> open(std::vector<std::size_t> signals, double rate_hz);
+  /// A new stream for these signals (indices into SimBridge::signals()) at `rate_hz`, carrying
+  /// node `node`'s dictionary (-1: none). Beyond max_clients, a shared read-only stream (no
+  /// signals, no dictionary; its backlog is small); nullptr beyond kMaxSharedClients more.
+  std::shared_ptr<Client> open(std::vector<std::size_t> signals, double rate_hz, int node = -1);
+  /// The node stream `id` receives the dictionary of (-1: none); false: no such stream, or a
+  /// shared one.
+  bool select_node(std::uint64_t id, int node);
+  static constexpr std::size_t kMaxSharedClients = 32;
   void close(const std::shared_ptr<Client>& client);
   std::size_t clients() const;
 
  private:
   void run();
   void batch();
+  /// Every kLiveTablePeriod: the selected nodes' dictionaries and the live faults, read between
+  /// ticks, as "od" deltas and "faults" events for the clients that want them.
+  void live_tables(const std::vector<std::shared_ptr<Client>>& clients, std::vector<std::string>& out);
   std::string nodes_event(const std::vector<NodeStatus>& nodes) const;
 
   SimBridge& bridge_;
@@ -78,6 +92,9 @@ class EventHub {
 
   // Hub thread state.
   std::uint64_t node_version_ = ~0ULL, pdo_version_ = ~0ULL, dropped_seen_ = 0;
+  std::uint64_t restarts_seen_ = 0;
+  std::uint64_t next_id_ = 0;
+  std::chrono::steady_clock::time_point next_tables_{};
   std::vector<NodeStatus> nodes_;
   std::vector<CapturedFrame> captured_;  ///< one batch's frames (sized to the ring once)
   std::vector<std::vector<PdoMap>> maps_;

@@ -3,10 +3,25 @@
 #include <cstdio>
 
 #include "devices/canopen/nmt_state.h"
+#include "devices/canopen/object_dictionary.h"
+#include "engine/value_codec.h"
 
 namespace control {
 
 using nlohmann::json;
+
+json value_json(canopen::DataType type, const std::vector<std::uint8_t>& bytes) {
+  using canopen::DataType;
+  if (type == DataType::VisibleString) {
+    std::string s(bytes.begin(), bytes.end());
+    while (!s.empty() && s.back() == '\0') s.pop_back();
+    return s;
+  }
+  if (canopen::is_variable_length(type) || bytes.size() != canopen::type_size(type)) return hex_string(bytes.data(), bytes.size());
+  if (canopen::is_real(type)) return scenario::decode_number(type, bytes);
+  if (canopen::is_signed_integer(type)) return canopen::decode_signed(bytes);
+  return canopen::decode_unsigned(bytes);
+}
 
 std::string hex_string(const std::uint8_t* data, std::size_t n) {
   static constexpr char kDigits[] = "0123456789ABCDEF";

@@ -1,5 +1,6 @@
 #include "control/sim_bridge.h"
 
+#include <algorithm>
 #include <thread>
 
 #include "devices/canopen/emergency.h"
@@ -93,11 +94,15 @@ SimBridge::SimBridge(ClockOptions clock) : options_(clock) {}
 SimBridge::~SimBridge() = default;
 
 void SimBridge::attach(const scenario::RunContext& context) {
+  const bool again = ctx_ != nullptr;  // a restart
+  if (again) forget_run();
   ctx_ = std::make_unique<scenario::RunContext>(context);
   auto& world = ctx_->world;
   realtime_ = ctx_->scheduler.mode() == sim::ClockMode::RealTime;
-  paused_ = !realtime_ && options_.start_paused;
-  speed_ = options_.speed;
+  if (!again) {
+    paused_ = !realtime_ && options_.start_paused;
+    speed_ = options_.speed;
+  }
   now_us_ = ctx_->scheduler.now().time_since_epoch().count();
   tick_us_ = ctx_->scheduler.tick().count();
 
@@ -107,6 +112,8 @@ void SimBridge::attach(const scenario::RunContext& context) {
     bus.add_tap(taps_.back().get());
   }
   masters_.resize(world.buses().size());
+  sync_.assign(world.buses().size(), {});
+  sync_on_ = false;
   sdo_jobs_.resize(world.buses().size());
   node_by_id_.assign(world.buses().size(), {});
   for (auto& t : node_by_id_) t.fill(-1);
@@ -114,15 +121,61 @@ void SimBridge::attach(const scenario::RunContext& context) {
   const auto n = world.nodes().size();
   work_.resize(n);
   pdo_work_.assign(n, std::vector<PdoMap>(2 * kMaxPdos));
+  std::vector<SignalInfo> signals;
   for (const auto& node : world.nodes())
-    for (const auto& p : node.ports) signals_.push_back({node.spec->name + "." + p.name, p.unit, p.value});
+    for (const auto& p : node.ports) signals.push_back({node.spec->name + "." + p.name, p.unit, p.value});
   if (auto* plant = world.plant())
-    for (const auto& p : plant->ports()) signals_.push_back({p.name, p.unit, p.value});
-  signal_rows_ = std::make_unique<SpscRing<SignalRow>>(512, SignalRow{0, std::vector<double>(signals_.size())});
+    for (const auto& p : plant->ports()) signals.push_back({p.name, p.unit, p.value});
+  if (!again) {
+    signals_ = std::move(signals);
+    signal_rows_ = std::make_unique<SpscRing<SignalRow>>(512, SignalRow{0, std::vector<double>(signals_.size())});
+  } else {
+    // The same scenario has the same signals: only where they live changed (the names stay, the
+    // stream thread reads them).
+    for (std::size_t k = 0; k < signals_.size() && k < signals.size(); ++k) signals_[k].value = signals[k].value;
+  }
 
   publish_nodes(now_us_.load(std::memory_order_relaxed), true);
   refresh_pdo_maps();
+  if (again) {
+    restarts_.fetch_add(1);
+    for (auto& w : restart_waiters_) w->set_value(true);
+    restart_waiters_.clear();
+  }
   attached_ = true;
+}
+
+void SimBridge::forget_run() {
+  // The old run's world is gone: its buses (taps, endpoints), SDO transfers, faults and SYNC.
+  for (auto& job : sdo_jobs_) {
+    if (job) job->promise->set_value({SdoOutcome::Kind::Failed, {}, 0, "the scenario restarted"});
+    job.reset();
+  }
+  sdo_active_ = 0;
+  taps_.clear();
+  masters_.clear();
+  live_faults_.clear();
+  restart_pending_ = false;
+  end_seen_ = false;
+  end_reached_ = false;
+  budget_ = 0;
+  anchor_valid_ = false;
+  next_sample_us_ = 0;
+  work_.assign(work_.size(), NodeStatus{});
+  dirty_ = true;
+  pdo_dirty_ = true;
+}
+
+std::future<bool> SimBridge::request_restart() {
+  auto promise = std::make_shared<std::promise<bool>>();
+  auto future = promise->get_future();
+  if (!post([this, promise](const scenario::RunContext&) {
+        restart_pending_ = true;
+        anchor_valid_ = false;  // a paced wait returns at once
+        restart_waiters_.push_back(promise);
+      }))
+    promise->set_value(false);
+  return future;
 }
 
 void SimBridge::detach() {
@@ -136,6 +189,8 @@ void SimBridge::detach() {
     job.reset();
   }
   sdo_active_ = 0;
+  for (auto& w : restart_waiters_) w->set_value(false);
+  restart_waiters_.clear();
   publish_capture();  // what the last ticks captured still reaches the stream
   wake_.notify_all();
 }
@@ -176,8 +231,8 @@ bool SimBridge::before_tick(bool end_reached) {
     budget_ = 0;
   }
   service();
-  if (realtime_) return !sched.stop_requested();
-  while (!sched.stop_requested()) {
+  if (realtime_) return tick_goes_ahead();
+  while (!sched.stop_requested() && !restart_pending_) {
     if (!paused_.load()) {
       pace();
       break;
@@ -197,7 +252,14 @@ bool SimBridge::before_tick(bool end_reached) {
     wait_for_work(std::chrono::steady_clock::now() + kStopPoll);
     service();
   }
-  return !sched.stop_requested();
+  return tick_goes_ahead();
+}
+
+bool SimBridge::tick_goes_ahead() {
+  if (ctx_->scheduler.stop_requested() || restart_pending_) return false;
+  // The control plane's SYNCs due at this tick go out with it (none while the clock stands).
+  if (sync_on_) produce_sync();
+  return true;
 }
 
 void SimBridge::service() {
@@ -507,6 +569,18 @@ bool SimBridge::send_frame(std::size_t bus, const sim::CanFrame& frame) {
   const auto refused = stats.tx_queue_overflow;
   master(bus).send(frame);
   return stats.tx_queue_overflow == refused;
+}
+
+void SimBridge::set_sync(std::size_t bus, sim::Duration period, std::uint8_t counter_overflow) {
+  master(bus);  // its endpoint exists before the first SYNC (nothing allocates in produce_sync)
+  sync_[bus].start(period, counter_overflow, ctx_->scheduler.now());
+  sync_on_ = std::any_of(sync_.begin(), sync_.end(), [](const scenario::SyncProducer& p) { return p.period.count() > 0; });
+}
+
+void SimBridge::produce_sync() {
+  const auto now = ctx_->scheduler.now();
+  for (std::size_t b = 0; b < sync_.size(); ++b)
+    if (const auto f = sync_[b].due(now)) masters_[b]->send(*f);
 }
 
 void SimBridge::add_listener() {

@@ -29,6 +29,7 @@
 #include "control/spsc_ring.h"
 #include "engine/run_extension.h"
 #include "engine/sdo_client.h"
+#include "engine/sync_producer.h"
 #include "sim/bus.h"
 
 namespace control {
@@ -84,10 +85,18 @@ class SimBridge final : public scenario::RunExtension {
   explicit SimBridge(ClockOptions clock);
   ~SimBridge() override;
 
-  // scenario::RunExtension (scheduler thread)
+  // scenario::RunExtension (scheduler thread). attach again after a restart: the new run's
+  // context; the clock keeps its pause and speed, what belonged to the old run is dropped.
   void attach(const scenario::RunContext& context) override;
   bool before_tick(bool end_reached) override;
   void detach() override;
+  bool wants_restart() override { return restart_pending_; }
+
+  /// Asks the runner to rebuild the scenario at t = 0 at the next tick boundary (POST
+  /// /api/restart); the future holds true once the new run is attached, false if the run ended.
+  std::future<bool> request_restart();
+  /// Restarts so far (the stream tells its clients).
+  std::uint64_t restarts() const { return restarts_.load(); }
 
   // ---- any thread ---------------------------------------------------------------------------
   enum class Posted { Queued, Full, Ended };
@@ -148,6 +157,11 @@ class SimBridge final : public scenario::RunExtension {
   /// Sends a frame from the control plane's endpoint on bus `bus` (scheduler thread: commands);
   /// false when the bus refused it (its transmit queue for this endpoint is full).
   bool send_frame(std::size_t bus, const sim::CanFrame& frame);
+
+  /// The control plane's SYNC producer on bus `bus` (POST /api/sync), run before every tick while
+  /// one is on; period 0 stops it (scheduler thread: commands). Independent of the script's.
+  void set_sync(std::size_t bus, sim::Duration period, std::uint8_t counter_overflow);
+  const scenario::SyncProducer& sync(std::size_t bus) const { return sync_[bus]; }
 
   /// Fault ids: live faults applied by the dashboard (scheduler thread only).
   struct LiveFault {
@@ -238,6 +252,17 @@ class SimBridge final : public scenario::RunExtension {
 
   std::vector<LiveFault> live_faults_;
   int fault_ids_ = 0;
+
+  // Restart (scheduler thread, but for restarts_).
+  bool restart_pending_ = false;
+  std::vector<std::shared_ptr<std::promise<bool>>> restart_waiters_;
+  std::atomic<std::uint64_t> restarts_{0};
+  void forget_run();
+
+  std::vector<scenario::SyncProducer> sync_;  ///< per bus
+  bool sync_on_ = false;                      ///< any of them has a period
+  void produce_sync();
+  bool tick_goes_ahead();  ///< before_tick's answer when the tick runs (unless stopping)
 };
 
 }  // namespace control

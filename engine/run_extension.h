@@ -32,6 +32,10 @@ class RunExtension {
   virtual bool before_tick(bool end_reached) = 0;
   /// After the last tick (the outputs are not written yet).
   virtual void detach() = 0;
+  /// Asked when before_tick returned false: true to start the run again at t = 0 (the runner
+  /// rebuilds everything from the scenario, restarts its outputs and calls attach again, without
+  /// detach).
+  virtual bool wants_restart() { return false; }
 };
 
 }  // namespace scenario

@@ -70,8 +70,15 @@ struct Runner::Impl {
 };
 
 Runner::Runner(const Scenario& scenario, const Environment& env, const RunOptions& options)
-    : impl_(std::make_unique<Impl>(scenario, options)) {
+    : env_(env), impl_(std::make_unique<Impl>(scenario, options)) {
+  build();
+}
+
+void Runner::build() {
   auto& m = *impl_;
+  const Scenario& scenario = m.scenario;
+  const Environment& env = env_;
+  const RunOptions& options = m.options;
   BuildOptions build;
   build.can = options.can;
   build.strict_eds = options.strict_eds;
@@ -116,6 +123,22 @@ Runner::Runner(const Scenario& scenario, const Environment& env, const RunOption
     if (error.empty()) error = m.recorder->open_csv(m.csv_path);
     if (!error.empty()) throw LoadError(SourceMark{m.csv_path, 0, 0}, error);
   }
+  scheduler_.store(m.scheduler.get());
+}
+
+void Runner::rebuild() {
+  scheduler_.store(nullptr);
+  const Scenario& scenario = impl_->scenario;
+  const RunOptions options = impl_->options;
+  impl_.reset();
+  impl_ = std::make_unique<Impl>(scenario, options);
+  try {
+    build();
+  } catch (...) {  // e.g. a socketcand port taken meanwhile: the extension's run has ended
+    if (options.extension) options.extension->detach();
+    throw;
+  }
+  if (stopping_.load()) impl_->scheduler->request_stop();
 }
 
 Runner::~Runner() {
@@ -123,13 +146,25 @@ Runner::~Runner() {
   g_active.compare_exchange_strong(self, nullptr);
 }
 
-void Runner::request_stop() { impl_->scheduler->request_stop(); }
+void Runner::request_stop() {
+  stopping_.store(true);
+  if (auto* s = scheduler_.load()) s->request_stop();
+}
 const Verdicts& Runner::verdicts() const { return impl_->verdicts; }
 const RunSummary& Runner::summary() const { return impl_->summary; }
 const MasterMonitor& Runner::master_monitor() const { return *impl_->monitor; }
 Runner* active_runner() { return g_active.load(); }
 
 int Runner::run() {
+  for (;;) {
+    bool restarted = false;
+    const int rc = run_once(restarted);
+    if (!restarted) return rc;
+    rebuild();
+  }
+}
+
+int Runner::run_once(bool& restarted) {
   auto& m = *impl_;
   g_active.store(this);
   auto& sched = *m.scheduler;
@@ -203,6 +238,12 @@ int Runner::run() {
     }
   }
   if (progress_shown) std::fprintf(m.options.out, "\r%60s\r", "");
+  if (m.options.extension && !sched.stop_requested() && m.options.extension->wants_restart()) {
+    // The outputs of this run are dropped: the new run writes them afresh from t = 0.
+    if (!m.options.quiet) std::fprintf(m.options.out, "vplant run: restart at %.3f s: the scenario starts again at t = 0\n", sim::seconds(sched.now()));
+    restarted = true;
+    return 0;
+  }
   const double wall = wall_now() - wall_start;
   m.summary.interrupted = sched.stop_requested();
   if (m.options.extension) m.options.extension->detach();

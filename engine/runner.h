@@ -12,6 +12,7 @@
 // until its duration, the end of the script, or SIGINT, and writes the outputs and the summary.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <functional>
@@ -25,6 +26,10 @@
 #include "engine/outcome.h"
 #include "engine/run_extension.h"
 #include "engine/scenario.h"
+
+namespace sim {
+class Scheduler;
+}
 
 namespace scenario {
 
@@ -91,7 +96,8 @@ class Runner {
   Runner& operator=(const Runner&) = delete;
 
   /// Runs to the end and writes the outputs. Returns the exit code: 0 all assertions held,
-  /// 1 one failed, 2 an output could not be written.
+  /// 1 one failed, 2 an output could not be written. An extension that asks for a restart
+  /// (RunExtension::wants_restart) has the run rebuilt and started again at t = 0.
   int run();
   /// Async-signal-safe: ends the run at the next tick boundary.
   void request_stop();
@@ -103,7 +109,16 @@ class Runner {
 
  private:
   struct Impl;
+  /// Builds the run from the scenario (the constructor, and again for a restart).
+  void build();
+  /// One run from t = 0; `restarted` when the extension asked for a restart (nothing written).
+  int run_once(bool& restarted);
+  /// Drops the run and builds it afresh (the old one first: its sockets and files are freed).
+  void rebuild();
+  const Environment env_;  ///< a copy: a rebuild outlives the caller's
   std::unique_ptr<Impl> impl_;
+  std::atomic<bool> stopping_{false};
+  std::atomic<sim::Scheduler*> scheduler_{nullptr};  ///< request_stop's, null while rebuilding
 };
 
 /// Loads and runs a scenario file, each case of its matrix in turn (scenario_cases.h): the whole

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "devices/canopen/object_dictionary.h"
+#include "engine/rpdo_frame.h"
 #include "engine/value_codec.h"
 
 namespace scenario {
@@ -164,20 +165,8 @@ void ScriptedMaster::step(sim::Time now, sim::Duration) {
   }
   // SYNC after the script, so a `sync` step's first SYNC goes out in the same tick and a
   // `sync: off` stops the very next one.
-  for (std::size_t i = 0; i < sync_.size(); ++i) {
-    auto& p = sync_[i];
-    if (p.period.count() == 0 || now < p.next) continue;
-    sim::CanFrame f;
-    f.id = 0x080;
-    if (p.overflow) {
-      f.dlc = 1;
-      f.data[0] = p.counter;
-      p.counter = p.counter >= p.overflow ? 1 : static_cast<std::uint8_t>(p.counter + 1);
-    }
-    send(static_cast<int>(i), f, now);
-    p.next += p.period;
-    if (p.next <= now) p.next = now + p.period;  // a period shorter than the tick: once per tick
-  }
+  for (std::size_t i = 0; i < sync_.size(); ++i)
+    if (const auto f = sync_[i].due(now)) send(static_cast<int>(i), *f, now);
 }
 
 bool ScriptedMaster::start(Bound& b, sim::Time now) {
@@ -189,11 +178,7 @@ bool ScriptedMaster::start(Bound& b, sim::Time now) {
           send(b.bus, sim::CanFrame::data_frame(0x000, {static_cast<std::uint8_t>(a.command), b.node_id}), now);
           return true;
         } else if constexpr (std::is_same_v<T, SyncStep>) {
-          auto& p = sync_[static_cast<std::size_t>(b.bus)];
-          p.period = a.period;
-          p.next = now;
-          p.overflow = a.counter_overflow;
-          p.counter = 1;
+          sync_[static_cast<std::size_t>(b.bus)].start(a.period, a.counter_overflow, now);
           return true;
         } else if constexpr (std::is_same_v<T, SdoReadStep>) {
           sdo_bus_ = b.bus;
@@ -334,67 +319,14 @@ void ScriptedMaster::finish_sdo(Bound& b, sim::Time now) {
 }
 
 bool ScriptedMaster::send_rpdo(Bound& b, const RpdoStep& s, sim::Time now) {
-  // The master knows the node's configuration (as from its EDS/DCF): read the RPDO's COB-ID and
-  // mapping from the node as they are now.
-  auto& od = b.node->device->node().od();
-  const auto comm = static_cast<std::uint16_t>(0x1400 + s.pdo - 1), map = static_cast<std::uint16_t>(0x1600 + s.pdo - 1);
-  const auto* cob = od.entry(comm, 1);
-  const auto* count = od.entry(map, 0);
-  const Step& step = *b.step;
-  if (!cob || !count) {
-    verdicts_.fail(b.name, step.mark, now, "RPDO " + std::to_string(s.pdo) + " of " + s.node, "the node has no such RPDO");
+  // The master knows the node's configuration (as from its EDS/DCF): the RPDO's COB-ID and
+  // mapping are read from the node as they are now.
+  const auto r = build_rpdo(b.node->device->node().od(), s.node, s.pdo, s.values);
+  if (!r.frame) {
+    verdicts_.fail(b.name, r.value ? s.values[*r.value].mark : b.step->mark, now, r.expected, r.actual);
     return true;
   }
-  const auto cob_id = cob->as<std::uint32_t>();
-  if (cob_id & 0x80000000u) {
-    verdicts_.fail(b.name, step.mark, now, "a valid RPDO " + std::to_string(s.pdo), "COB-ID " + hex32(cob_id) + " (invalid)");
-    return true;
-  }
-  std::uint8_t payload[8] = {};
-  std::size_t bits = 0;
-  std::vector<bool> used(s.values.size(), false);
-  for (unsigned i = 1; i <= count->as<unsigned>(); ++i) {
-    const auto* m = od.entry(map, static_cast<std::uint8_t>(i));
-    if (!m) continue;
-    const auto entry = m->as<std::uint32_t>();
-    const auto index = static_cast<std::uint16_t>(entry >> 16);
-    const auto sub = static_cast<std::uint8_t>(entry >> 8);
-    const std::size_t len = entry & 0xFF;
-    if (bits + len > 64 || len % 8 != 0) {
-      verdicts_.fail(b.name, step.mark, now, "a byte-aligned mapping of at most 64 bits", "mapping entry " + hex32(entry));
-      return true;
-    }
-    std::vector<std::uint8_t> bytes(len / 8, 0);
-    if (index >= 0x20) {  // not a dummy entry
-      std::size_t k = 0;
-      while (k < s.values.size() && !(s.values[k].index == index && s.values[k].sub == sub)) ++k;
-      const auto* obj = od.entry(index, sub);
-      if (k == s.values.size() || !obj) {
-        verdicts_.fail(b.name, step.mark, now, "a value for every mapped object", address(index, sub) + " is mapped but not given");
-        return true;
-      }
-      used[k] = true;
-      std::vector<std::uint8_t> encoded;
-      if (auto err = encode_literal(obj->type, s.values[k].value, encoded); !err.empty()) {
-        verdicts_.fail(b.name, s.values[k].mark, now, address(index, sub) + " value", err);
-        return true;
-      }
-      bytes = canopen::resize_value(obj->type, encoded, len / 8);
-    }
-    for (std::size_t j = 0; j < bytes.size(); ++j) payload[bits / 8 + j] = bytes[j];
-    bits += len;
-  }
-  for (std::size_t k = 0; k < s.values.size(); ++k) {
-    if (!used[k]) {
-      verdicts_.fail(b.name, s.values[k].mark, now, "objects mapped into RPDO " + std::to_string(s.pdo),
-                     address(s.values[k].index, s.values[k].sub) + " is not mapped");
-      return true;
-    }
-  }
-  sim::CanFrame f = sim::CanFrame::data_frame(cob_id & 0x1FFFFFFFu, std::span<const std::uint8_t>(payload, bits / 8));
-  f.extended = (cob_id & 0x20000000u) != 0;
-  if (!f.extended) f.id &= 0x7FF;
-  send(b.bus, f, now);
+  send(b.bus, *r.frame, now);
   return true;
 }
 

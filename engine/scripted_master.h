@@ -21,6 +21,7 @@
 #include "engine/fault_injector.h"
 #include "engine/outcome.h"
 #include "engine/sdo_client.h"
+#include "engine/sync_producer.h"
 #include "engine/world.h"
 
 namespace scenario {
@@ -53,12 +54,6 @@ class ScriptedMaster final : public sim::Steppable {
     canopen::DataType type = canopen::DataType::Unsigned32;
     std::vector<std::uint8_t> bytes;  ///< SDO write data
     std::vector<Signal> signals;      ///< condition / expectation signal
-  };
-  struct SyncProducer {
-    sim::Duration period{0};
-    sim::Time next{};
-    std::uint8_t overflow = 0;
-    std::uint8_t counter = 1;
   };
 
   void bind(Bound& b);

@@ -161,6 +161,17 @@ class TwoSeats(unittest.TestCase):
         status, _, _ = request(self.port, "GET", "/seats/3/api/nodes", token=self.t[0])
         self.assertEqual(status, 404)
 
+    def test_the_trainer_restarts_one_seat(self):
+        time.sleep(0.3)  # both clocks past 0.3 s
+        status, _, body = request(self.port, "POST", "/api/seats/1/restart", token=self.t[0], body={})
+        self.assertEqual(status, 200, body)
+        status, _, body = request(self.port, "GET", "/api/seats", token=self.t[0])
+        clocks = {s["seat"]: s["clock"]["t_us"] for s in body["seats"]}
+        self.assertLess(clocks[1], clocks[2], "seat 1 starts again at t = 0, seat 2 runs on")
+        # A seat's token cannot restart through the trainer's endpoint.
+        status, _, _ = request(self.port, "POST", "/api/seats/2/restart", token=self.t[2], body={})
+        self.assertEqual(status, 401)
+
     def test_the_host_check_stays(self):
         status, _, body = request(self.port, "GET", "/seats/1/api/nodes", token=self.t[1], host="evil.example:80")
         self.assertEqual(status, 403)

@@ -26,7 +26,7 @@ class LivePlant {
   /// `exercises_dir`: the control plane's exercise files (docs/exercises.md), "" = none.
   LivePlant(scenario::Scenario scenario, const scenario::Environment& env, std::size_t max_streams = 4,
             std::string exercises_dir = "")
-      : scenario_(std::move(scenario)) {
+      : scenario_(std::move(scenario)), env_(env) {
     scenario_.script.clear();
     scenario_.clock.duration.reset();
     control::UiOptions u;
@@ -41,12 +41,12 @@ class LivePlant {
     const auto err = plane_->bind();
     EXPECT_EQ(err, "");
     out_ = std::tmpfile();
-    thread_ = std::thread([this, &env] {
+    thread_ = std::thread([this] {
       scenario::RunOptions o;
       o.quiet = true;
       o.out = out_;
       o.extension = plane_.get();
-      scenario::Runner runner(scenario_, env, o);
+      scenario::Runner runner(scenario_, env_, o);
       runner_ = &runner;
       rc_ = runner.run();
       runner_ = nullptr;
@@ -101,6 +101,7 @@ class LivePlant {
 
  private:
   scenario::Scenario scenario_;
+  scenario::Environment env_;  ///< a copy: callers pass default_environment()'s temporary
   std::unique_ptr<control::ControlPlane> plane_;
   std::thread thread_;
   std::atomic<scenario::Runner*> runner_{nullptr};
