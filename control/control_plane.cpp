@@ -985,6 +985,7 @@ void ControlPlane::attach(const scenario::RunContext& context) {
                                      options_.max_streams);
   s.hub->start();
   s.routes();
+  if (!s.http) return;  // hosted: the host serves
   s.http->start();
   if (options_.out) {
     std::fprintf(options_.out, "vplant: control plane at %s%s\n", url().c_str(),
@@ -996,5 +997,14 @@ void ControlPlane::attach(const scenario::RunContext& context) {
 }
 
 void ControlPlane::detach() { bridge_.detach(); }
+
+void ControlPlane::host_at(const std::string& address, int port) {
+  options_.address = address;
+  port_ = port;
+}
+
+http::Response ControlPlane::admit(const http::Request& request) const { return server_->check_request(request); }
+
+void ControlPlane::handle(http::Request& request, http::Response& response) { server_->dispatch(request, response); }
 
 }  // namespace control

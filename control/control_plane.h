@@ -26,6 +26,11 @@ struct UiOptions {
   std::string exercise;       ///< selected at the start ("" = none)
 };
 
+namespace http {
+struct Request;
+struct Response;
+}  // namespace http
+
 /// Parses "[ADDR:]PORT" into `options`; returns an error message, empty on success.
 std::string parse_ui_address(std::string_view text, UiOptions& options);
 bool is_loopback(const std::string& address);
@@ -54,6 +59,15 @@ class ControlPlane final : public scenario::RunExtension {
   bool wants_restart() override { return bridge_.wants_restart(); }
 
   SimBridge& bridge() { return bridge_; }
+
+  // Hosted (a classroom seat, control/classroom_server.h): no server of its own; the host's
+  // server, listening at `address:port`, hands it the requests for its prefix, the prefix
+  // stripped. Call host_at instead of bind, before the run.
+  void host_at(const std::string& address, int port);
+  /// The Host/Origin/Sec-Fetch-Site checks (an http::Admission): status 0 = admitted.
+  http::Response admit(const http::Request& request) const;
+  /// Answers a request (the API, else the page's files).
+  void handle(http::Request& request, http::Response& response);
 
  private:
   struct Server;

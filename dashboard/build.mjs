@@ -1,6 +1,7 @@
 // Builds the dashboard with esbuild (no network, no dev server):
 //   node build.mjs --outdir DIR          the page: DIR/index.html, DIR/assets/app.js, DIR/assets/app.css,
-//                                        and the HTML report's code: DIR/report/report.js, DIR/report/report.css
+//                                        the HTML report's code: DIR/report/report.js, DIR/report/report.css,
+//                                        and the classroom overview: DIR/classroom/{index.html,classroom.js,classroom.css}
 //   node build.mjs --tests-outdir DIR    the unit tests (tests/dashboard/*.test.ts) as ES modules for `node --test`
 //   node build.mjs --e2e-outdir DIR      the browser test (tests/dashboard/*.e2e.ts) as CommonJS, playwright-core external
 import { build } from 'esbuild';
@@ -33,6 +34,9 @@ async function buildPage(outdir) {
   await copyFile(join(here, 'index.html'), join(outdir, 'index.html'));
   // The report (engine/report/): vplant writes these two files into the report folder.
   await build({ ...browserBundle, entryPoints: { report: 'src/report/main.ts' }, outdir: join(outdir, 'report') });
+  // The trainer's overview of `vplant classroom` (served at /, its files under /classroom/).
+  await build({ ...browserBundle, entryPoints: { classroom: 'src/classroom/main.ts' }, outdir: join(outdir, 'classroom') });
+  await copyFile(join(here, 'src/classroom/index.html'), join(outdir, 'classroom/index.html'));
 }
 
 async function entries(folder, suffix) {

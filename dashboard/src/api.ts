@@ -1,4 +1,5 @@
-// The control-plane API (docs/api.md) as typed calls. Every call goes to the page's own origin.
+// The control-plane API (docs/api.md) as typed calls. Every call goes to the page's own origin,
+// relative to the page: under `vplant classroom` a seat's page is /seats/K/ and its API /seats/K/api/.
 import type { ActiveFault, ClockState, FindingsPage, Frame, NodeInfo, NodeMachines, OdEntry, Pdo, Scenario, SdoResult, SignalBatch, Transition } from './types';
 
 export class ApiError extends Error {
@@ -7,8 +8,11 @@ export class ApiError extends Error {
   }
 }
 
+/** An API path ("/api/...") relative to the page's folder. */
+export const relative = (path: string): string => path.replace(/^\//, '');
+
 async function call<T>(method: string, path: string, body?: unknown): Promise<T> {
-  const res = await fetch(path, {
+  const res = await fetch(relative(path), {
     method,
     headers: body === undefined ? {} : { 'Content-Type': 'application/json' },
     body: body === undefined ? undefined : JSON.stringify(body),
@@ -71,7 +75,7 @@ export interface StreamHandlers {
 /** Opens the live stream; EventSource reconnects by itself after a drop. */
 export function openStream(signals: readonly string[], rateHz: number, h: StreamHandlers): EventSource {
   const q = new URLSearchParams({ signals: signals.join(','), rate: String(rateHz) });
-  const es = new EventSource(`/api/events?${q}`);
+  const es = new EventSource(relative(`/api/events?${q}`));
   const on = <T>(name: string, fn: (v: T) => void) =>
     es.addEventListener(name, (ev) => fn(JSON.parse((ev as MessageEvent<string>).data) as T));
   on('frames', h.frames);

@@ -16,15 +16,28 @@ TEST(DashboardAssets, RootIsTheIndexPage) {
 }
 
 TEST(DashboardAssets, ThePageReferencesAssetsThatExist) {
+  // The page names its files relative to itself ("assets/app.js"): a classroom seat serves it
+  // under /seats/K/ (docs/classroom.md).
   const std::string_view html = dashboard::find_asset("/")->body;
   for (const char* path : {"/assets/app.js", "/assets/app.css"}) {
-    EXPECT_NE(html.find(path), std::string_view::npos) << path;
+    EXPECT_NE(html.find(std::string("\"") + (path + 1) + "\""), std::string_view::npos) << path;
     const dashboard::Asset* a = dashboard::find_asset(path);
     ASSERT_NE(a, nullptr) << path;
     EXPECT_GT(a->body.size(), 100u) << path;
   }
   EXPECT_EQ(dashboard::find_asset("/assets/app.js")->content_type, "text/javascript; charset=utf-8");
   EXPECT_EQ(dashboard::find_asset("/assets/app.css")->content_type, "text/css; charset=utf-8");
+}
+
+TEST(DashboardAssets, TheClassroomOverviewReferencesAssetsThatExist) {
+  const dashboard::Asset* page = dashboard::find_asset("/classroom/index.html");
+  ASSERT_NE(page, nullptr);
+  for (const char* path : {"/classroom/classroom.js", "/classroom/classroom.css"}) {
+    EXPECT_NE(page->body.find(std::string("\"") + (path + 1) + "\""), std::string_view::npos) << path;
+    const dashboard::Asset* a = dashboard::find_asset(path);
+    ASSERT_NE(a, nullptr) << path;
+    EXPECT_GT(a->body.size(), 100u) << path;
+  }
 }
 
 TEST(DashboardAssets, TheBodyIsTheWholeFileWithoutATerminator) {

@@ -16,5 +16,6 @@ Runner add_devices_command(CLI::App& app);
 Runner add_run_command(CLI::App& app);
 Runner add_dcf_command(CLI::App& app);
 Runner add_test_command(CLI::App& app);
+Runner add_classroom_command(CLI::App& app);
 
 }  // namespace vplant

@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   add("run", "run a scenario: the whole plant, a scripted master, faults and checks", vplant::add_run_command);
   add("dcf", "write the DCF of a scenario's node: its configured values and node-ID", vplant::add_dcf_command);
   add("test", "run a suite of scenarios: folders, -j in parallel, shards, one JUnit, a report", vplant::add_test_command);
+  add("classroom", "one plant per trainee: seats with their own links, a trainer's overview (docs/classroom.md)",
+      vplant::add_classroom_command);
 
   try {
     app.parse(argc, argv);

@@ -1,6 +1,5 @@
 // `vplant run SCENARIO`: the whole plant from a scenario file (docs/scenarios.md). Exit codes:
 // 0 every assertion held, 1 one failed, 2 bad input (file, option, interface).
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -13,6 +12,7 @@
 #include "engine/runner.h"
 #include "engine/yaml_fields.h"
 #include "tools/vplant/commands.h"
+#include "tools/vplant/exercise_folder.h"
 #include "tools/vplant/exit_codes.h"
 #include "tools/vplant/key_value.h"
 #include "tools/vplant/stop_signals.h"
@@ -44,21 +44,6 @@ struct RunArgs {
   std::string exercises;  ///< "" = the shipped folder
   std::string exercise;
 };
-
-/// The shipped exercises: beside an installed binary (PREFIX/bin → PREFIX/share/vplant/exercises),
-/// else the source tree's folder this binary was built from.
-std::string default_exercises_dir() {
-  char exe[4096];
-  const auto n = ::readlink("/proc/self/exe", exe, sizeof exe - 1);
-  if (n > 0) {
-    std::string path(exe, static_cast<std::size_t>(n));
-    const auto slash = path.rfind('/');
-    const std::string installed = path.substr(0, slash == std::string::npos ? 0 : slash) + "/../share/vplant/exercises";
-    struct stat st{};
-    if (::stat(installed.c_str(), &st) == 0 && S_ISDIR(st.st_mode)) return installed;
-  }
-  return VPLANT_SOURCE_EXERCISES;
-}
 
 bool stop_active_run() {
   auto* r = scenario::active_runner();

@@ -2,6 +2,7 @@
 // instruction and hint, and a done mark with the virtual time the plant saw the goal met. The
 // checking is the plant's (GET /api/exercise); this view only shows it, polled once a second.
 // A trainee may choose another exercise of the folder (GET /api/exercises, POST /api/exercise).
+import { relative } from '../api';
 import { el } from '../dom';
 
 export interface ExerciseStep {
@@ -68,7 +69,7 @@ export function exerciseModel(state: ExerciseState): ExerciseModel | null {
 }
 
 async function getJson<T>(path: string, body?: unknown): Promise<T> {
-  const res = await fetch(path, body === undefined ? {} : {
+  const res = await fetch(relative(path), body === undefined ? {} : {
     method: 'POST',
     headers: { 'Content-Type': 'application/json' },
     body: JSON.stringify(body),
