@@ -253,7 +253,25 @@ void EventHub::batch() {
   captured_.clear();
   CapturedFrame f;
   while (captured_.size() < bridge_.frames().capacity() && bridge_.frames().pop(f)) captured_.push_back(f);
-  const std::size_t first = captured_.size() > kMaxFramesPerBatch ? captured_.size() - kMaxFramesPerBatch : 0;
+  std::size_t first = captured_.size() > kMaxFramesPerBatch ? captured_.size() - kMaxFramesPerBatch : 0;
+  // Running faster than real time (at this batch and the last: a step while paused keeps every
+  // frame), only the frames of the newest stretch of simulated time as long as the wall time
+  // since the last batch (what a real-time view of the moment shows): the hub's decoding then
+  // costs what it costs at speed 1, not more as the simulation gets faster.
+  const auto clock = bridge_.clock();
+  const auto wall_now = std::chrono::steady_clock::now();
+  const auto span_us = std::max<std::int64_t>(
+      std::chrono::duration_cast<std::chrono::microseconds>(wall_now - last_batch_wall_).count(),
+      std::chrono::duration_cast<std::chrono::microseconds>(kBatchPeriod).count());
+  last_batch_wall_ = wall_now;
+  if (!clock.realtime && (clock.speed <= 0 || clock.speed > 1) && !clock.paused && !last_clock_.paused &&
+      first < captured_.size()) {
+    const std::int64_t from = captured_.back().t_us - span_us;
+    first = static_cast<std::size_t>(
+        std::partition_point(captured_.begin() + static_cast<std::ptrdiff_t>(first), captured_.end(),
+                             [from](const CapturedFrame& c) { return c.t_us <= from; }) -
+        captured_.begin());
+  }
   const std::size_t n = captured_.size() - first;
   nlohmann::json batch = nlohmann::json::array();
   for (std::size_t k = first; !clients.empty() && k < captured_.size(); ++k) {
@@ -280,7 +298,6 @@ void EventHub::batch() {
     }
   }
 
-  const auto clock = bridge_.clock();
   const bool clock_changed = clock.t_us != last_clock_.t_us || clock.paused != last_clock_.paused ||
                              clock.speed != last_clock_.speed || clock.end_reached != last_clock_.end_reached;
   last_clock_ = clock;

@@ -2,8 +2,9 @@
 // 50 ms, decodes the frames once, and hands each stream client its server-sent events (frames,
 // nodes on change, signals at the client's rate, clock, dropped). A client's backlog is bounded:
 // a client that cannot keep up loses frames, counted in a "dropped" event; so do frames the
-// scheduler could not capture because the hub was behind (full virtual speed carries more frames
-// than the hub decodes). Every 20 ms it asks the scheduler for a node snapshot (the scheduler
+// scheduler could not capture because the hub was behind, and, faster than real time, those older
+// than the newest batch-long stretch of simulated time (decoding costs the same at any speed).
+// Every 20 ms it asks the scheduler for a node snapshot (the scheduler
 // takes none on its own while the clock runs).
 #pragma once
 
@@ -95,6 +96,7 @@ class EventHub {
   std::uint64_t restarts_seen_ = 0;
   std::uint64_t next_id_ = 0;
   std::chrono::steady_clock::time_point next_tables_{};
+  std::chrono::steady_clock::time_point last_batch_wall_{};  ///< faster than real time: the frames' window
   std::vector<NodeStatus> nodes_;
   std::vector<CapturedFrame> captured_;  ///< one batch's frames (sized to the ring once)
   std::vector<std::vector<PdoMap>> maps_;
