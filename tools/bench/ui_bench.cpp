@@ -3,10 +3,10 @@
 // streaming everything (frames, nodes, four signals at 50 Hz). Virtual time: simulated seconds per
 // CPU second of the scheduler's thread and of the whole process (the server threads included),
 // and per wall second. Real time (no script, the plant idling after boot): tick lateness.
-//   ui_bench [--duration S] [--realtime S] [--repeat N] [--only off|on|stream]
+//   ui_bench [--duration S] [--realtime S] [--repeat N] [--only off|on|stream|page] [--issue21-only]
 //   (defaults: 10 s virtual, 3 s real time, all three ways; --duration 0 skips virtual time,
 //   --realtime 0 real time). With
-//   --only, one way (for callgrind: --toggle-collect='scenario::Runner::run()' counts the
+//   --only, one way and not the issue-21 figures (for perf or callgrind: --toggle-collect='scenario::Runner::run()' counts the
 //   scheduler's thread alone).
 #include <httplib.h>
 #include <time.h>
