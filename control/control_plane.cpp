@@ -141,14 +141,6 @@ const char* access_name(canopen::Access a) {
 }
 
 /// A dictionary value as JSON: numbers for numeric types, text for visible strings, hex else.
-/// An integer entry in the product's documented unit ("12.3 mm"); "" without a scaling.
-std::string display_text(canopen::DataType type, const std::vector<std::uint8_t>& bytes, const canopen::ValueScaling& s) {
-  if (!s || bytes.size() != canopen::type_size(type)) return {};
-  if (canopen::is_signed_integer(type)) return canopen::scaled_text(static_cast<double>(canopen::decode_signed(bytes)), s);
-  if (canopen::is_unsigned_integer(type)) return canopen::scaled_text(static_cast<double>(canopen::decode_unsigned(bytes)), s);
-  return {};
-}
-
 std::string abort_hex(std::uint32_t code) {
   char buf[16];
   std::snprintf(buf, sizeof buf, "0x%08X", code);

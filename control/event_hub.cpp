@@ -120,6 +120,7 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
   struct Tables {
     std::int64_t t_us = 0;
     std::vector<std::vector<std::vector<std::uint8_t>>> values;  ///< per node in `nodes`, per catalog entry
+    std::vector<std::vector<canopen::ValueScaling>> scalings;    ///< the same, the product's documented unit
     nlohmann::json faults = nlohmann::json::array();
   };
   const auto& catalog = catalog_;
@@ -129,11 +130,14 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
         Tables t;
         t.t_us = c.scheduler.now().time_since_epoch().count();
         for (const int n : nodes) {
-          const auto& od = c.world.nodes()[static_cast<std::size_t>(n)].device->node().od();
+          auto& device = *c.world.nodes()[static_cast<std::size_t>(n)].device;
+          const auto& od = device.node().od();
           auto& v = t.values.emplace_back();
+          auto& sc = t.scalings.emplace_back();
           for (const auto& e : catalog.entries(static_cast<std::size_t>(n))) {
             const auto* entry = od.entry(e.index, e.sub);
             v.push_back(entry ? entry->value : std::vector<std::uint8_t>{});
+            sc.push_back(device.value_scaling(e.index, e.sub));
           }
         }
         for (const auto& f : bridge.live_faults()) {
@@ -162,10 +166,13 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
     const bool full = !c.od_sent_;
     if (full) c.od_last_.assign(values.size(), {});
     nlohmann::json changed = nlohmann::json::object();
+    nlohmann::json display = nlohmann::json::object();
     for (std::size_t e = 0; e < values.size() && e < entries.size(); ++e) {
       if (!full && values[e] == c.od_last_[e]) continue;
       c.od_last_[e] = values[e];
-      changed[object_key(entries[e].index, entries[e].sub)] = value_json(entries[e].type, values[e]);
+      const auto key = object_key(entries[e].index, entries[e].sub);
+      changed[key] = value_json(entries[e].type, values[e]);
+      if (auto text = display_text(entries[e].type, values[e], tables->scalings[k][e]); !text.empty()) display[key] = std::move(text);
     }
     c.od_sent_ = true;
     if (!full && changed.empty()) continue;
@@ -173,7 +180,8 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
                  nlohmann::json{{"node", topo_.node_names[static_cast<std::size_t>(c.node_)]},
                                 {"t_us", tables->t_us},
                                 {"full", full},
-                                {"values", std::move(changed)}}
+                                {"values", std::move(changed)},
+                                {"display", std::move(display)}}
                      .dump());
   }
 }

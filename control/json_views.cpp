@@ -44,6 +44,13 @@ std::string hex_string(const std::uint8_t* data, std::size_t n) {
   return s;
 }
 
+std::string display_text(canopen::DataType type, const std::vector<std::uint8_t>& bytes, const canopen::ValueScaling& s) {
+  if (!s || bytes.size() != canopen::type_size(type)) return {};
+  if (canopen::is_signed_integer(type)) return canopen::scaled_text(static_cast<double>(canopen::decode_signed(bytes)), s);
+  if (canopen::is_unsigned_integer(type)) return canopen::scaled_text(static_cast<double>(canopen::decode_unsigned(bytes)), s);
+  return {};
+}
+
 bool parse_hex(const std::string& text, std::vector<std::uint8_t>& out, std::size_t max_bytes) {
   out.clear();
   int high = -1;

@@ -23,6 +23,8 @@ nlohmann::json signal_json(const std::string& name, const std::string& unit, con
 std::string hex_string(const std::uint8_t* data, std::size_t n);
 /// A dictionary value as JSON: numbers for numeric types, text for visible strings, hex else.
 nlohmann::json value_json(canopen::DataType type, const std::vector<std::uint8_t>& bytes);
+/// An integer entry in the product's documented unit ("12.3 mm"); "" without a scaling.
+std::string display_text(canopen::DataType type, const std::vector<std::uint8_t>& bytes, const canopen::ValueScaling& s);
 /// Parses "0F00" / "0f 00" into bytes; false if malformed (odd digits, non-hex, > max bytes).
 bool parse_hex(const std::string& text, std::vector<std::uint8_t>& out, std::size_t max_bytes);
 

@@ -1,6 +1,6 @@
 // The control-plane API (docs/api.md) as typed calls. Every call goes to the page's own origin,
 // relative to the page: under `vplant classroom` a seat's page is /seats/K/ and its API /seats/K/api/.
-import type { ActiveFault, ClockState, FindingsPage, Frame, NodeInfo, NodeMachines, OdEntry, Pdo, Scenario, SdoResult, SignalBatch, Transition } from './types';
+import type { ActiveFault, ClockState, FindingsPage, Frame, NodeInfo, NodeMachines, OdEntry, OdEvent, Pdo, Scenario, SdoResult, SignalBatch, StreamHello, Transition } from './types';
 
 export class ApiError extends Error {
   constructor(readonly status: number, message: string) {
@@ -58,6 +58,8 @@ export const api = {
   sync: () => call<{ period_ms: number }>('GET', '/api/sync'),
   setSync: (periodMs: number) => call<{ ok: boolean }>('POST', '/api/sync', { period_ms: periodMs }),
   restart: () => call<{ ok: boolean }>('POST', '/api/restart'),
+  /** Which node's dictionary the stream `stream` (its id from `hello`) carries as `od` events. */
+  streamNode: (stream: number, node: string | null) => call<{ ok: boolean }>('POST', '/api/events/node', { stream, node }),
 };
 
 export interface StreamHandlers {
@@ -69,12 +71,19 @@ export interface StreamHandlers {
   transition(t: Transition & { node: string }): void;
   /** POST /api/restart by anyone: the run starts again at t = 0. */
   restart(): void;
+  /** Once, first: the stream's id (to choose its node) and whether it is a shared read-only one. */
+  hello(h: StreamHello): void;
+  /** The chosen node's dictionary: whole on selection, then what changed. */
+  od(o: OdEvent): void;
+  /** The live faults, on connect and when they change. */
+  faults(f: ActiveFault[]): void;
   connection(open: boolean): void;
 }
 
 /** Opens the live stream; EventSource reconnects by itself after a drop. */
-export function openStream(signals: readonly string[], rateHz: number, h: StreamHandlers): EventSource {
+export function openStream(signals: readonly string[], rateHz: number, node: string | null, h: StreamHandlers): EventSource {
   const q = new URLSearchParams({ signals: signals.join(','), rate: String(rateHz) });
+  if (node) q.set('node', node);
   const es = new EventSource(relative(`/api/events?${q}`));
   const on = <T>(name: string, fn: (v: T) => void) =>
     es.addEventListener(name, (ev) => fn(JSON.parse((ev as MessageEvent<string>).data) as T));
@@ -85,6 +94,9 @@ export function openStream(signals: readonly string[], rateHz: number, h: Stream
   on('dropped', h.dropped);
   on('transition', h.transition);
   on('restart', h.restart);
+  on('hello', h.hello);
+  on('od', h.od);
+  on('faults', h.faults);
   es.onopen = () => h.connection(true);
   es.onerror = () => h.connection(false);
   return es;

@@ -7,7 +7,7 @@ import { el } from './dom';
 import { formatIndex, sdoWriteBody } from './od_input';
 import { defaultSignals } from './signal_choice';
 import { Store } from './store';
-import type { OdEntry, SdoResult } from './types';
+import type { OdEntry, OdEvent, SdoResult } from './types';
 import { ClockControls, renderNmtControls } from './views/controls';
 import { FaultsPanel } from './views/faults_panel';
 import { FindingsView } from './views/findings_view';
@@ -48,6 +48,7 @@ async function main(): Promise<void> {
 
   // --- the object dictionary -------------------------------------------------------------------
   let odNode: string | null = null;
+  const odPending: OdEvent[] = [];  // the stream's `od` events for a node whose rows are loading
   const od = new OdBrowser($('od'), {
     write: async (e: OdEntry, text: string) => {
       if (!store.selected) return;
@@ -74,7 +75,7 @@ async function main(): Promise<void> {
       const r = await api.sdoWrite(node, body);
       if (r.ok) od.report(true, `${text}: done`);
       else od.report(false, sdoFailure(text, r));
-      void refreshOd();
+      if (streamShared) void refreshOd();  // a shared stream carries no dictionary
     } catch (err) {
       od.report(false, err instanceof ApiError && err.status === 504 ? `${text}: timeout, the node did not answer` : errorText(err));
     }
@@ -89,6 +90,8 @@ async function main(): Promise<void> {
       if (odNode !== node) od.show(entries);
       else od.update(entries);
       odNode = node;
+      // what the stream sent while the rows were loading, in its order (the newest value wins)
+      for (const o of odPending.splice(0)) if (o.node === node) od.updateValues(o.values, o.display ?? {});
     } catch (err) {
       message(errorText(err));
     }
@@ -184,7 +187,8 @@ async function main(): Promise<void> {
     void loadMachines(node);
     void loadTransitions(node);
     void loadPdos(node);
-    void refreshOd();
+    void refreshOd();  // names, types and access; the stream's `od` events carry the values from here on
+    if (streamId !== null && !streamShared) api.streamNode(streamId, node).catch((err) => message(errorText(err)));
   }
   store.on('selected', onSelected);
 
@@ -223,11 +227,8 @@ async function main(): Promise<void> {
     resume: (speed) => void clockAction(() => api.resume(speed)),
     restart: () => void restart(),
   });
-  let lastT = store.clock.t_us;
   store.on('clock', () => {
     const c = store.clock;
-    if (c.t_us < lastT) afterRestart();  // restarted (here or by another viewer)
-    lastT = c.t_us;
     clockControls.show(c.t_us, c.paused, c.end_reached ?? false);
   });
 
@@ -240,12 +241,11 @@ async function main(): Promise<void> {
       void refreshOd();
     }
   }
+  // The stream's `restart` event (for a restart from here or by another viewer) clears the history,
+  // once: it comes before the new run's frames, which the POST's answer may come after.
   async function restart(): Promise<void> {
     try {
       await api.restart();
-      lastT = 0;
-      afterRestart();
-      store.setClock(await api.clock());
       message('restarted: the scenario runs again from t = 0', true);
     } catch (err) {
       message(errorText(err));
@@ -301,6 +301,8 @@ async function main(): Promise<void> {
   // --- the stream ----------------------------------------------------------------------------------
   const trace = new TraceView($('trace'), sc.nodes);
   let stream: EventSource | null = null;
+  let streamId: number | null = null;
+  let streamShared = false;  // a viewer beyond the server's limit: no dictionary in its stream
   const plotDefault = defaultSignals([...store.signals.keys()], sc.nodes.map((n) => n.name));
   const plots = new Plots($('plots'), store.signals, plotDefault, (chosen) => {
     plots.choose(chosen);
@@ -311,7 +313,8 @@ async function main(): Promise<void> {
 
   function connect(chosen: readonly string[]): void {
     stream?.close();
-    stream = openStream([...new Set([...chosen, ...nodeTable.signalNames()])], 20, {
+    streamId = null;
+    stream = openStream([...new Set([...chosen, ...nodeTable.signalNames()])], 20, store.selected, {
       frames: (batch) => trace.push(batch),
       nodes: (nodes) => store.setNodes(nodes),
       signals: (b) => {
@@ -328,6 +331,18 @@ async function main(): Promise<void> {
         if (t.node === store.selected) machinesSoon(t.node);  // bit machines' states, power
       },
       restart: () => afterRestart(),
+      hello: (h) => {
+        streamId = h.stream;
+        streamShared = h.shared;
+        // selected while connecting: the stream was opened for another node
+        if (!h.shared && h.node !== store.selected) api.streamNode(h.stream, store.selected).catch((err) => message(errorText(err)));
+      },
+      od: (o) => {
+        if (o.node !== store.selected) return;
+        if (o.node === odNode) od.updateValues(o.values, o.display ?? {});
+        else if (odPending.push(o) > 64) odPending.shift();  // bounded: a full event comes with every selection
+      },
+      faults: (f) => faults.showActive(f),
       connection: (open) => {
         const s = $('connection');
         s.textContent = open ? 'live' : 'disconnected';
@@ -359,13 +374,11 @@ async function main(): Promise<void> {
 
   store.setNodes(await api.nodes());
   onSelected();
-  await refreshFaults();
   connect(plotDefault);
-  // Rare changes that have no stream event yet: the active faults, the verdict, the dictionary.
-  setInterval(() => void refreshFaults(), 2000);
+  // The verdict has no stream event; a shared read-only stream carries no dictionary.
   setInterval(() => void refreshFindings(), 2000);
   mountExerciseView(document.querySelector('main') ?? document.body);
-  setInterval(() => { if (!lesson) void refreshOd(); }, 1000);
+  setInterval(() => { if (streamShared && !lesson) void refreshOd(); }, 1000);
 }
 
 main().catch((e) => {

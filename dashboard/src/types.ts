@@ -143,6 +143,19 @@ export interface ClockState {
 
 export interface ActiveFault { id: number; summary: string; since_t_us: number }
 
+/** The stream's first event (docs/api.md, "Live stream"). */
+export interface StreamHello { stream: number; shared: boolean; node: string | null }
+
+/** The stream's `od` event: the chosen node's dictionary values (whole when `full`), keyed "6041:00". */
+export interface OdEvent {
+  node: string;
+  t_us: number;
+  full: boolean;
+  values: Record<string, number | string | null>;
+  /** The entries with a product scaling among `values`, in engineering units ("12.3 mm"). */
+  display?: Record<string, string>;
+}
+
 export interface SignalBatch { t_us: number[]; values: Record<string, number[]> }
 
 /** GET /api/findings: the verdict on the master (docs/masters.md, "Verdict"). */

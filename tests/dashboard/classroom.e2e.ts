@@ -168,6 +168,35 @@ test('the trainer gives every seat the nmt exercise; the overview shows each sea
   await shots(seat1, 'seat1');
 });
 
+test('the trainee completes dsp408 by clicking in the lesson view; the overview shows the progress', async () => {
+  await seat1.getByTestId('node-row-dsv').click();
+  await seat1.getByTestId('view-toggle').click();
+  await seat1.getByTestId('exercise-choice').selectOption('dsp408');
+  const done = (n: number) => seat1.getByTestId(`exercise-step-${n}`).and(seat1.locator('[data-status="done"]')).waitFor();
+  // Each step by the page's own buttons: control words by SDO, then NMT to the selected node.
+  const steps: [number, string[]][] = [
+    [1, ['cw-preset-0x0001']], [2, ['cw-preset-0x0003']], [3, ['cw-preset-0x0007']],
+    [4, ['cw-preset-0x0000']], [5, ['cw-preset-0x0007']], [6, ['nmt-start', 'nmt-stop']],
+  ];
+  for (const [n, buttons] of steps) {
+    for (const b of buttons) await seat1.getByTestId(b).click();
+    await done(n);
+  }
+  await seat1.getByTestId('transition-list').locator('tr[data-transition="TR_8"]').first().waitFor();
+  // The DSV's DSP 408 diagram stays whole beside the open exercise.
+  const whole = await seat1.evaluate(() => {
+    const d = document.querySelector('[data-machine=dsp408] svg')!.getBoundingClientRect();
+    const p = document.getElementById('detail-section')!.getBoundingClientRect();
+    return d.height >= 100 && d.top >= p.top && d.bottom <= p.bottom + 1;
+  });
+  assert.ok(whole, 'the DSP 408 diagram is cut off in the lesson view');
+  await shots(seat1, 'seat1-dsp408-done');
+  // The trainer sees seat 1 through; seat 2 (still on nmt) has none of it.
+  const s1 = overview.getByTestId('seat-1');
+  await s1.getByTestId('progress').filter({ hasText: '6/6 steps done' }).waitFor();
+  await shots(overview, 'overview-dsp408');
+});
+
 test("the trainer's view of a seat is read-only", async () => {
   const [view] = await Promise.all([trainer.waitForEvent('page'), overview.getByTestId('seat-2').getByTestId('view').click()]);
   view.on('pageerror', (e) => pageErrors.push(e.message));

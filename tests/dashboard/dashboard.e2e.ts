@@ -347,6 +347,24 @@ test('virtual time under the trainer: pause, one tick, run 100 ms, resume', asyn
   await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t && c.paused), t0.t_us + t0.tick_us + 100_000);
   await byTestId('clock-resume').click();
   await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
+  // The same from the keyboard: Space pauses, S steps one tick, R runs N ms, Space resumes.
+  await page.locator('body').click({ position: { x: 5, y: 5 } });
+  await page.keyboard.press(' ');
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'paused');
+  const t1 = await now();
+  await page.keyboard.press('s');
+  await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t), t1.t_us + t1.tick_us);
+  await page.keyboard.press('r');
+  await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t && c.paused), t1.t_us + t1.tick_us + 100_000);
+  // Space toggles what the page shows: wait until it shows the pause at the end of the run.
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'paused');
+  await page.keyboard.press(' ');
+  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
+  // L: the lesson view and back.
+  await page.keyboard.press('l');
+  await page.waitForFunction(() => document.body.classList.contains('lesson') && location.hash === '#lesson');
+  await page.keyboard.press('L');
+  await page.waitForFunction(() => !document.body.classList.contains('lesson') && location.hash === '');
   assert.deepEqual(pageErrors, []);
 });
 
@@ -403,6 +421,33 @@ test('an SDO to a STOPPED node says timeout, not refused', async () => {
   await byTestId('nmt-target').selectOption('');
 });
 
+test('Restart brings every node back to its boot-up', async () => {
+  autoResume = false;
+  await byTestId('restart').click();
+  await page.waitForFunction(() => /restarted/.test(document.querySelector('[data-testid=messages]')?.textContent ?? ''));
+  if ((await byTestId('clock-state').textContent()) === 'paused') await byTestId('clock-resume').click();
+  for (const name of ['vtvpcd', 'dsv', 'md2', 'hlt', 'wdga']) {
+    await page.waitForFunction((n) => document.querySelector(`[data-testid=nmt-${n}]`)?.textContent === 'PRE-OPERATIONAL', name);
+  }
+  const t = await page.evaluate(async () => (await (await fetch('/api/clock')).json()).t_us as number);
+  assert.ok(t < 5_000_000, `the clock started again: ${t}`);
+  // Every node's boot-up (700h + ID, data 00) is in the trace again.
+  await page.waitForFunction(() => {
+    const ids = [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=HEARTBEAT]')]
+      .filter((tr) => tr.querySelector('td:nth-child(7)')?.textContent === '00')
+      .map((tr) => tr.querySelector('td:nth-child(4)')?.textContent);
+    return ['77F', '702', '703', '705', '73F'].every((id) => ids.includes(id));
+  });
+  // The DSV's transition list starts again: its power-on at 0 s, nothing of the old run (which
+  // drove it to DEVICE_MODE_ACTIVE).
+  await byTestId('node-row-dsv').click();
+  await page.waitForFunction(() => {
+    const rows = [...document.querySelectorAll('[data-testid=transition-list] tbody tr')].map((tr) => tr.textContent ?? '');
+    return rows.some((r) => r.startsWith('0.000 s') && r.includes('OFF → INITIALISING')) && !rows.some((r) => r.includes('DEVICE_MODE_ACTIVE'));
+  });
+  await page.screenshot({ path: join(screenshots!, 'restart.png') });
+});
+
 /** The panels shown (main's sections not hidden) as boxes in CSS pixels, and the page's extent. */
 async function panelBoxes(p: Page) {
   return p.evaluate(() => ({
@@ -451,10 +496,21 @@ test('no panel overlaps another at 1366×768 and 1920×1080, 100 % and 150 %; th
           }
           assert.ok(L.scrollWidth <= L.innerWidth + 1, `${name}: the page is wider than the window (${L.scrollWidth} > ${L.innerWidth})`);
           if (lesson) {
-            assert.deepEqual(L.boxes.map((b) => b.id).sort(), ['controls-section', 'detail-section', 'trace-section', 'transitions-section']);
+            // the exercise panel is there when the server has exercises (GET /api/exercises)
+            const exercises = await p.evaluate(async () => ((await (await fetch('api/exercises')).json()) as string[]).length > 0);
+            assert.deepEqual(L.boxes.map((b) => b.id).sort(),
+              ['controls-section', 'detail-section', ...(exercises ? ['exercise-section'] : []), 'trace-section', 'transitions-section']);
+            // the selected node's device diagram whole on the screen, beside the NMT diagram
+            const diagram = await p.evaluate(() => {
+              const r = document.querySelector('[data-machine=dsp408] svg')!.getBoundingClientRect();
+              return { y: r.y, bottom: r.bottom, h: r.height };
+            });
+            const detail = L.boxes.find((b) => b.id === 'detail-section')!;
+            assert.ok(diagram.h >= 120 && diagram.y >= detail.y && diagram.bottom <= detail.y + detail.h + 1,
+              `${name}: the DSP 408 diagram is not whole in its panel: ${JSON.stringify([diagram, detail])}`);
             assert.ok(L.scrollHeight <= L.innerHeight + 1, `${name}: the lesson view scrolls (${L.scrollHeight} > ${L.innerHeight})`);
             for (const b of L.boxes) {
-              assert.ok(b.y >= L.header - 1 && b.y + b.h <= L.innerHeight + 1 && b.h >= 60, `${name}: ${b.id} is not on the screen: ${JSON.stringify(b)}`);
+              assert.ok(b.y >= L.header - 1 && b.y + b.h <= L.innerHeight + 1 && b.h >= (b.id === 'exercise-section' ? 20 : 60), `${name}: ${b.id} is not on the screen: ${JSON.stringify(b)}`);
             }
             // large type for a projector
             const px = await p.evaluate(() => parseFloat(getComputedStyle(document.querySelector('[data-testid=transition-list]')!).fontSize));

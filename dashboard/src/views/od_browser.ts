@@ -69,6 +69,15 @@ export class OdBrowser {
     }
   }
 
+  /** The stream's values ("6041:00" → value, and the scaled ones' text) for the node shown: update those cells. */
+  updateValues(values: Record<string, number | string | null>, display: Record<string, string>): void {
+    for (const [key, value] of Object.entries(values)) {
+      const r = this.rows.get(key.replace(':', '-').toUpperCase());
+      if (!r) continue;
+      this.update([{ ...r.entry, value, display: display[key] }]);
+    }
+  }
+
   report(ok: boolean, text: string): void {
     this.result.className = ok ? 'od-result ok' : 'od-result refused';
     this.result.textContent = text;
