@@ -979,6 +979,7 @@ void ControlPlane::attach(const scenario::RunContext& context) {
                                      options_.max_streams);
   s.hub->start();
   s.routes();
+  routed_ = true;
   if (!s.http) return;  // hosted: the host serves
   s.http->start();
   if (options_.out) {
