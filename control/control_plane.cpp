@@ -656,11 +656,6 @@ struct ControlPlane::Server {
     }
   }
 
-  /// Drops the live faults whose `for:` has run out (the fault injector ended them).
-  static void forget_ended(std::vector<SimBridge::LiveFault>& faults, std::int64_t now_us) {
-    std::erase_if(faults, [now_us](const SimBridge::LiveFault& f) { return f.until_us >= 0 && f.until_us <= now_us; });
-  }
-
   void inject(const http::Request& req, http::Response& res) {
     const auto spec = fault_spec(req);
     struct Result {
@@ -675,12 +670,13 @@ struct ControlPlane::Server {
       // Active faults are a client-growable table (each wire fault is a rule every frame on its
       // bus is checked against): bounded exactly, because the check and the insert run in one
       // command on the scheduler's thread, never apart across the HTTP threads.
-      auto& faults = cp.bridge_.live_faults();
-      forget_ended(faults, now_us);
+      auto& faults = cp.bridge_.live_faults(now_us);
       if (faults.size() >= kMaxLiveFaults) return Result{{}, 0, false, true};
       SimBridge::LiveFault live;
       try {
-        live.clear = c.faults.inject(spec, now);
+        auto injected = c.faults.inject(spec, now);
+        live.clear = std::move(injected.clear);
+        live.over = std::move(injected.over);
       } catch (const scenario::LoadError& e) {
         return Result{e.what(), 0, false, false};
       }
@@ -703,8 +699,7 @@ struct ControlPlane::Server {
 
   void list_faults(const http::Request&, http::Response& res) {
     const auto a = call<json>([this](const scenario::RunContext& c) {
-      auto& faults = cp.bridge_.live_faults();
-      forget_ended(faults, c.scheduler.now().time_since_epoch().count());
+      auto& faults = cp.bridge_.live_faults(c.scheduler.now().time_since_epoch().count());
       json out = json::array();
       for (const auto& f : faults) {
         json j = {{"id", f.id}, {"summary", f.summary}, {"since_t_us", f.since_us}};
@@ -720,8 +715,7 @@ struct ControlPlane::Server {
     json q = {{"id", std::string(req.matches[1])}};
     const int id = static_cast<int>(*integer_field(q, "id", 1, INT32_MAX));
     const bool found = call<bool>([this, id](const scenario::RunContext& c) {
-      auto& faults = cp.bridge_.live_faults();
-      forget_ended(faults, c.scheduler.now().time_since_epoch().count());
+      auto& faults = cp.bridge_.live_faults(c.scheduler.now().time_since_epoch().count());
       for (auto it = faults.begin(); it != faults.end(); ++it) {
         if (it->id != id) continue;
         auto clear = std::move(it->clear);
@@ -977,6 +971,7 @@ void ControlPlane::attach(const scenario::RunContext& context) {
                                      options_.max_streams);
   s.hub->start();
   s.routes();
+  routed_ = true;
   if (!s.http) return;  // hosted: the host serves
   s.http->start();
   if (options_.out) {

@@ -4,6 +4,7 @@
 // published snapshots). `vplant run --ui [ADDR:]PORT` creates one.
 #pragma once
 
+#include <atomic>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -59,6 +60,9 @@ class ControlPlane final : public scenario::RunExtension {
   bool wants_restart() override { return bridge_.wants_restart(); }
 
   SimBridge& bridge() { return bridge_; }
+  /// Its routes are in place (set at the end of the first attach; the bridge is attached before
+  /// the routes are added): a host serves its requests only from then on.
+  bool routed() const { return routed_.load(); }
 
   // Hosted (a classroom seat, control/classroom_server.h): no server of its own; the host's
   // server, listening at `address:port`, hands it the requests for its prefix, the prefix
@@ -76,6 +80,7 @@ class ControlPlane final : public scenario::RunExtension {
   SimBridge bridge_;
   ExerciseHost exercises_;
   std::unique_ptr<Server> server_;
+  std::atomic<bool> routed_{false};
 };
 
 }  // namespace control

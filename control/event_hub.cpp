@@ -140,8 +140,7 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
             sc.push_back(device.value_scaling(e.index, e.sub));
           }
         }
-        for (const auto& f : bridge.live_faults()) {
-          if (f.until_us >= 0 && f.until_us <= t.t_us) continue;  // its `for:` ran out
+        for (const auto& f : bridge.live_faults(t.t_us)) {
           nlohmann::json j = {{"id", f.id}, {"summary", f.summary}, {"since_t_us", f.since_us}};
           if (f.until_us >= 0) j["until_t_us"] = f.until_us;
           t.faults.push_back(std::move(j));

@@ -175,8 +175,15 @@ class SimBridge final : public scenario::RunExtension {
     std::int64_t since_us = 0;
     std::int64_t until_us = -1;  ///< when its `for:` ends it; -1: until DELETE
     std::function<void(sim::Time)> clear;
+    std::function<bool()> over;  ///< true once it ended by itself (a power-off whose node has power again)
+    /// Still in force at `now_us`: its `for:` has not run out and it has not ended by itself.
+    bool active(std::int64_t now_us) const { return (until_us < 0 || until_us > now_us) && !(over && over()); }
   };
-  std::vector<LiveFault>& live_faults() { return live_faults_; }
+  /// The live faults still in force at `now_us` (the ended ones are dropped first).
+  std::vector<LiveFault>& live_faults(std::int64_t now_us) {
+    std::erase_if(live_faults_, [now_us](const LiveFault& f) { return !f.active(now_us); });
+    return live_faults_;
+  }
   int next_fault_id() { return ++fault_ids_; }
 
  private:

@@ -63,12 +63,17 @@ void FaultInjector::apply(const FaultSpec& f, sim::Time now) {
   if (f.duration && clear) undo_.push_back({now + *f.duration, std::move(clear)});
 }
 
-FaultInjector::Clear FaultInjector::inject(const FaultSpec& f, sim::Time now) {
+FaultInjector::Injected FaultInjector::inject(const FaultSpec& f, sim::Time now) {
   check(f);
   std::string refused;
   auto clear = apply_now(f, now, &refused);
   if (!refused.empty()) throw LoadError(f.mark, "fault: " + refused);
-  if (!clear) return clear;
+  if (!clear) return {};
+  Injected out;
+  if (const auto* power = std::get_if<Power>(&f.action); power && power->kind == Power::Kind::Off) {
+    const auto* canopen_node = &node(power->node).device->node();
+    out.over = [canopen_node, off = canopen_node->power_ons()] { return canopen_node->power_ons() != off; };
+  }
   // Ended by whichever comes first, the caller or `for:`; the other then does nothing.
   auto once = std::make_shared<Clear>(std::move(clear));
   Clear end = [once](sim::Time t) {
@@ -78,7 +83,16 @@ FaultInjector::Clear FaultInjector::inject(const FaultSpec& f, sim::Time now) {
     c(t);
   };
   if (f.duration) undo_.push_back({now + *f.duration, end});
-  return end;
+  out.clear = std::move(end);
+  return out;
+}
+
+/// Ends a power-off: powers the node on unless it got power since (a power-on, reset or cycle in
+/// between), which would otherwise boot it a second time.
+static FaultInjector::Clear power_on_unless_powered_since(devices::Device* device) {
+  return [device, off = device->node().power_ons()](sim::Time t) {
+    if (device->node().power_ons() == off) device->power_on(t);
+  };
 }
 
 FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now, std::string* refused) {
@@ -130,7 +144,7 @@ FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now,
           switch (a.kind) {
             case Power::Kind::Off:
               device->power_off();
-              clear = [device](sim::Time t) { device->power_on(t); };
+              clear = power_on_unless_powered_since(device);
               break;
             case Power::Kind::On: device->power_on(now); break;
             case Power::Kind::Reset:
@@ -140,7 +154,7 @@ FaultInjector::Clear FaultInjector::apply_now(const FaultSpec& f, sim::Time now,
             case Power::Kind::Cycle:
               device->power_off();
               if (a.off_time.count() == 0) device->power_on(now);
-              else undo_.push_back({now + a.off_time, [device](sim::Time t) { device->power_on(t); }});
+              else undo_.push_back({now + a.off_time, power_on_unless_powered_since(device)});
               break;
           }
         } else if constexpr (std::is_same_v<T, PlantParameter>) {

@@ -31,11 +31,18 @@ class FaultInjector final : public sim::Steppable {
   /// What undoes a fault applied by inject() (call it between ticks); empty when the fault has
   /// nothing to undo (power on, reset, a power cycle).
   using Clear = std::function<void(sim::Time)>;
+  /// A fault injected into a running plant: what ends it early (empty when nothing to undo; safe
+  /// to call after it ended) and, for a fault its target can end by itself, whether it has (a
+  /// power-off is over once its node has power again, by any path: power on, reset, cycle).
+  struct Injected {
+    Clear clear;
+    std::function<bool()> over;  ///< empty: over only through `clear` or its `for:`
+  };
   /// A fault injected into a running plant (the HTTP API, the library): checks `f` and applies
   /// it now. A device fault or plant value that its target refuses throws LoadError at f.mark
-  /// and changes nothing (a scenario's own faults fail a verdict instead). Returns what ends it
-  /// early, safe to call after it ended; with `for:` the injector also ends it then.
-  Clear inject(const FaultSpec& f, sim::Time now);
+  /// and changes nothing (a scenario's own faults fail a verdict instead). With `for:` the
+  /// injector also ends it then.
+  Injected inject(const FaultSpec& f, sim::Time now);
 
   void step(sim::Time now, sim::Duration dt) override;
   std::size_t applied() const { return applied_; }

@@ -92,6 +92,7 @@ void Node::power_on(sim::Time now) {
   boot_cause_ = ever_powered_ ? NmtCause{TransitionCause::Power, 1, "", "power on"}
                               : NmtCause{TransitionCause::Boot, 0, "", "power on"};
   ever_powered_ = true;
+  ++power_ons_;
   const CauseScope scope(*this, boot_cause_);
   record_nmt("OFF", "INITIALISING");
   std::string error;

@@ -54,6 +54,8 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   /// Power-off: silent, state lost except non-volatile storage.
   void power_off();
   bool powered() const { return powered_; }
+  /// How many times the node was powered on: a power-off fault is over once this moves on.
+  std::uint64_t power_ons() const { return power_ons_; }
 
   void on_frame(const sim::CanFrame& frame, sim::Time now) override;
   /// The bus's fault confinement (sim::Bus): error passive raises EMCY 8120h (or the product's
@@ -222,6 +224,7 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   NmtCause cause_;
   NmtCause boot_cause_;   ///< what started the pending boot-up (power, reset command)
   bool ever_powered_ = false;
+  std::uint64_t power_ons_ = 0;
 };
 
 }  // namespace canopen

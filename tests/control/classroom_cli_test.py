@@ -9,11 +9,13 @@ import argparse
 import http.client
 import json
 import os
+import queue
 import re
 import signal
 import subprocess
 import sys
 import tempfile
+import threading
 import time
 import unittest
 
@@ -50,7 +52,11 @@ def nmt_states(port, seat, token):
 
 
 class Classroom:
-    """A running `vplant classroom --seats N`, its port and its tokens (0 = the trainer's)."""
+    """A running `vplant classroom --seats N`, its port and its tokens (0 = the trainer's).
+
+    Its output is read by a thread all along: the wait for the links has a real deadline (a
+    blocking readline has none), and whatever the process logs later (late ticks on a loaded
+    machine) can never fill the pipe and stall it."""
 
     def __init__(self, seats, extra=()):
         self.proc = subprocess.Popen(
@@ -58,22 +64,42 @@ class Classroom:
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         self.lines = []
         self.tokens = {}
+        self.queue = queue.Queue()
+        self.reader = threading.Thread(target=self._read, daemon=True)
+        self.reader.start()
         deadline = time.monotonic() + 30
         while len(self.tokens) < seats + 1:
-            line = self.proc.stdout.readline()
-            if not line or time.monotonic() > deadline:
+            try:
+                line = self.queue.get(timeout=max(0.0, deadline - time.monotonic()))
+            except queue.Empty:
+                line = None
+            if not line:
                 self.stop()
                 raise AssertionError("vplant classroom printed no links:\n" + "".join(self.lines))
-            self.lines.append(line)
             m = re.search(r"http://127\.0\.0\.1:(\d+)/(?:seats/(\d+)/)?\?token=([0-9a-f]{32})", line)
             if m:
                 self.port = int(m.group(1))
                 self.tokens[int(m.group(2) or 0)] = m.group(3)
 
+    def _read(self):
+        for line in self.proc.stdout:
+            self.lines.append(line)
+            self.queue.put(line)
+        self.queue.put("")  # the end of its output
+
     def stop(self):
-        self.proc.send_signal(signal.SIGINT)
-        out, _ = self.proc.communicate(timeout=20)
-        return self.proc.returncode, "".join(self.lines) + out
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGINT)
+        self.proc.wait(timeout=20)
+        self.reader.join(timeout=20)
+        return self.proc.returncode, "".join(self.lines)
+
+
+def wait_booted(port, seat, token, deadline):
+    """Until every node of the seat is PRE-OPERATIONAL (a node still initialising ignores NMT)."""
+    while set(nmt_states(port, seat, token).values()) != {"PRE-OPERATIONAL"}:
+        assert time.monotonic() < deadline, f"seat {seat} did not boot: {nmt_states(port, seat, token)}"
+        time.sleep(0.05)
 
 
 class TwoSeats(unittest.TestCase):
@@ -109,11 +135,11 @@ class TwoSeats(unittest.TestCase):
         self.assertNotIn("STOPPED", nmt_states(self.port, 2, self.t[2]).values())
 
     def test_seats_share_nothing(self):
-        # Every node has booted (a node still initialising ignores the NMT command).
+        # Every node of both seats has booted (a node still initialising ignores the NMT command,
+        # and seat 2 is compared with PRE-OPERATIONAL below: on a loaded machine it may boot later).
         deadline = time.monotonic() + 10
-        while set(nmt_states(self.port, 1, self.t[1]).values()) != {"PRE-OPERATIONAL"}:
-            self.assertLess(time.monotonic(), deadline, "seat 1 did not boot")
-            time.sleep(0.05)
+        wait_booted(self.port, 1, self.t[1], deadline)
+        wait_booted(self.port, 2, self.t[2], deadline)
         status, _, body = request(self.port, "POST", "/seats/1/api/nmt", token=self.t[1],
                                   body={"command": "start", "node": 0})
         self.assertEqual(status, 200, body)
@@ -224,6 +250,58 @@ class Exercises(unittest.TestCase):
         status, _, body = request(self.port, "GET", "/api/seats", token=self.t[0])
         seats = {s["seat"]: s["exercise"] for s in body["seats"]}
         self.assertEqual(seats[1]["name"], "nmt")
+        self.assertEqual([st["done"] for st in seats[1]["steps"]][:3], [True, True, True])
+        self.assertFalse(any(st["done"] for st in seats[2]["steps"]))
+
+
+class Dsp408(unittest.TestCase):
+    """Issue 22's "done when": `dsp408` on both seats, seat 1's DSV driven to DEVICE_MODE_ACTIVE by
+    SDO; seat 1's steps are done, none of seat 2's."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.room = Classroom(2, ["--exercises", ARGS.exercises])
+        cls.port = cls.room.port
+        cls.t = cls.room.tokens
+
+    @classmethod
+    def tearDownClass(cls):
+        rc, out = cls.room.stop()
+        assert rc == 0, out
+
+    def progress(self, seat):
+        status, _, body = request(self.port, "GET", f"/seats/{seat}/api/exercise", token=self.t[seat])
+        self.assertEqual(status, 200, body)
+        return [step["done"] for step in body["steps"]]
+
+    def dsp408_state(self, seat):
+        status, _, body = request(self.port, "GET", f"/seats/{seat}/api/nodes/dsv/machines", token=self.t[seat])
+        self.assertEqual(status, 200, body)
+        return next(m["state"] for m in body["machines"] if m["machine"] == "dsp408")
+
+    def test_driving_seat_1s_dsv_to_active_marks_seat_1s_steps_only(self):
+        deadline = time.monotonic() + 20
+        wait_booted(self.port, 1, self.t[1], deadline)
+        wait_booted(self.port, 2, self.t[2], deadline)
+        status, _, body = request(self.port, "POST", "/api/seats/exercise", token=self.t[0], body={"name": "dsp408"})
+        self.assertEqual(status, 200, body)
+        self.assertEqual([(a["seat"], a["status"]) for a in body["seats"]], [(1, 200), (2, 200)])
+        for cw, state in ((0x0001, "DISABLED"), (0x0003, "HOLD"), (0x0007, "DEVICE_MODE_ACTIVE")):
+            status, _, body = request(self.port, "POST", "/seats/1/api/nodes/dsv/sdo", token=self.t[1],
+                                      body={"index": 0x6040, "sub": 0, "value": cw})
+            self.assertEqual(status, 200, body)
+            self.assertTrue(body["ok"], body)
+            while self.dsp408_state(1) != state:
+                self.assertLess(time.monotonic(), deadline, f"seat 1's DSV is not {state}")
+                time.sleep(0.05)
+        while self.progress(1)[:3] != [True, True, True]:
+            self.assertLess(time.monotonic(), deadline, f"seat 1's steps: {self.progress(1)}")
+            time.sleep(0.05)
+        self.assertEqual(self.progress(2), [False] * len(self.progress(2)))
+        self.assertEqual(self.dsp408_state(2), "INIT")
+        status, _, body = request(self.port, "GET", "/api/seats", token=self.t[0])
+        seats = {s["seat"]: s["exercise"] for s in body["seats"]}
+        self.assertEqual(seats[1]["name"], "dsp408")
         self.assertEqual([st["done"] for st in seats[1]["steps"]][:3], [True, True, True])
         self.assertFalse(any(st["done"] for st in seats[2]["steps"]))
 

@@ -211,6 +211,34 @@ TEST_F(ExerciseApi, VtvpcdAnEdgeBeforeTheFaultIsMendedAcknowledgesNothing) {
   EXPECT_EQ(done_steps(), 3u);
 }
 
+TEST_F(ExerciseApi, Dsp408Solved) {
+  select("dsp408");
+  for (const int cw : {0x0001, 0x0003, 0x0007}) {
+    sdo("dsv", 0x6040, 0, cw);
+    p().run_ms(20);
+  }
+  EXPECT_EQ(done_steps(), 3u);
+  sdo("dsv", 0x6040, 0, 0x0000);
+  p().run_ms(20);
+  EXPECT_EQ(done_steps(), 4u);
+  sdo("dsv", 0x6040, 0, 0x0007);
+  p().run_ms(20);
+  EXPECT_EQ(done_steps(), 5u);
+  nmt("start", "dsv");
+  nmt("stop", "dsv");
+  expect_all_done();
+}
+
+TEST_F(ExerciseApi, Dsp408PullingTheEnableInputIsNotTheControlWordPath) {
+  select("dsp408");
+  for (const int cw : {0x0001, 0x0003, 0x0007}) {
+    sdo("dsv", 0x6040, 0, cw);
+    p().run_ms(20);
+  }
+  input("dsv", "enable_input", 0);
+  EXPECT_EQ(done_steps(), 3u);
+}
+
 TEST_F(ExerciseApi, SelectingAgainStartsOver) {
   select("nmt");
   nmt("start", "dsv");

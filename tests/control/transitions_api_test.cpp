@@ -294,6 +294,52 @@ TEST_F(TransitionsApi, PowerOffShowsOffAndPowerOnBootsAgain) {
   EXPECT_TRUE(get("/api/nodes/dsv/machines")["powered"]);
 }
 
+// Issue 21: a live power_off is over once its node has power again by any path (power_on, reset,
+// a power cycle's end); it leaves GET /api/faults, and deleting it (or its `for:` running out)
+// does not boot the node a second time. The node view says OFF only while unpowered.
+TEST_F(TransitionsApi, PowerOffFaultIsOverOnceTheNodeHasPowerAgain) {
+  const auto listed_node = [&](const std::string& name) {
+    for (const auto& n : get("/api/nodes"))
+      if (n["name"] == name) return n;
+    ADD_FAILURE() << "no node " << name;
+    return json{};
+  };
+  const auto boots = [&](std::uint64_t after) {
+    std::size_t k = 0;
+    for (const auto& t : of("wdga", "nmt", after)) k += t["from"] == "OFF" ? 1u : 0u;
+    return k;
+  };
+  for (const json& again : {json{{"power_on", "wdga"}}, json{{"reset", "wdga"}}, json{{"power_cycle", {{"node", "wdga"}, {"off", "10ms"}}}}}) {
+    const auto seq = last_seq("wdga");
+    const auto off = LivePlant::json_of(p().post("/api/faults", {{"power_off", "wdga"}, {"for", "300ms"}}));
+    ASSERT_EQ(off["active"], true) << off.dump();
+    p().run_ms(5);
+    ASSERT_EQ(get("/api/faults").size(), 1u);
+    EXPECT_EQ(listed_node("wdga")["nmt"], "OFF");
+    EXPECT_EQ(get("/api/nodes/wdga/machines")["powered"], false);
+    const auto on = p().post("/api/faults", again);
+    ASSERT_EQ(status(on), 200) << again.dump();
+    p().run_ms(20);
+    EXPECT_TRUE(get("/api/faults").empty()) << again.dump() << " left " << get("/api/faults").dump();
+    EXPECT_NE(listed_node("wdga")["nmt"], "OFF") << again.dump();
+    EXPECT_EQ(get("/api/nodes/wdga/machines")["powered"], true);
+    for (const auto& m : get("/api/nodes/wdga/machines")["machines"]) EXPECT_NE(m["state"], "OFF") << m["machine"];
+    // The stale fault: deleting it is a 404 and changes nothing; nor does its `for:` running out.
+    EXPECT_EQ(status(p().http().Delete(("/api/faults/" + std::to_string(off["id"].get<int>())).c_str())), 404);
+    p().run_ms(600);
+    EXPECT_EQ(boots(seq), 1u) << again.dump() << " " << of("wdga", "nmt", seq).dump();
+    EXPECT_NE(listed_node("wdga")["nmt"], "OFF");  // powered (it waits for a frame to detect the bit rate)
+  }
+  // Cleared while still off: powers the node on once.
+  const auto seq = last_seq("wdga");
+  const auto off = LivePlant::json_of(p().post("/api/faults", {{"power_off", "wdga"}}));
+  p().run_ms(5);
+  ASSERT_EQ(status(p().http().Delete(("/api/faults/" + std::to_string(off["id"].get<int>())).c_str())), 200);
+  p().run_ms(600);
+  EXPECT_EQ(boots(seq), 1u);
+  EXPECT_TRUE(get("/api/faults").empty());
+}
+
 TEST_F(TransitionsApi, VtvpcdStatesIncludingTheLatchedFaultAndItsAcknowledgement) {
   auto v = of("vtvpcd", "vtvpcd");
   ASSERT_EQ(v.size(), 2u) << v.dump();

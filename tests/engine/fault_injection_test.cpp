@@ -92,6 +92,29 @@ script:
   EXPECT_EQ(r.rc, 0) << r.failure_text();
 }
 
+TEST(FaultInjection, APowerOffIsOverOnceTheNodeHasPowerAgain) {
+  const auto r = run_text(kMachine + R"(
+script:
+  - wait: 10ms  # boot-up
+  - fault: {power_off: ax, for: 50ms}
+  - wait: 5ms
+  - fault: {power_on: ax}
+  - wait_frame: {id: 0x705, data: "00", timeout: 10ms}
+  - wait: 1ms  # past the boot-up's tick
+  - name: the power-off's end finds the node powered and leaves it alone (no second boot-up)
+    expect_frames: {id: 0x705, data: "00", during: 80ms, count: 0}
+  - wait: 80ms  # expect_frames watches in the background
+  - fault: {power_cycle: {node: ax, off: 40ms}}
+  - wait: 5ms
+  - fault: {reset: ax}
+  - wait_frame: {id: 0x705, data: "00", timeout: 10ms}
+  - wait: 1ms
+  - name: the cycle's end finds the node powered (by the reset) and leaves it alone
+    expect_frames: {id: 0x705, data: "00", during: 80ms, count: 0}
+)");
+  EXPECT_EQ(r.rc, 0) << r.failure_text();
+}
+
 TEST(FaultInjection, PlantParameterChangesTheMotionAndIsRestored) {
   const auto r = run_text(kMachine + R"(
 faults:

@@ -120,7 +120,7 @@ int run(const ClassroomArgs& a) {
   }
   // Serve once every seat is attached: its routes are in place before the first request.
   for (auto& s : seats)
-    while (!s->plane().bridge().attached() && !s->plane().bridge().finished())
+    while (!s->plane().routed() && !s->plane().bridge().finished())
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
   server.start();
 

@@ -282,6 +282,55 @@ TEST_F(EdsNodeTest, NmtStatesAndTheServicesThatRunInThem) {
   EXPECT_EQ(h->read_u(0x1017, 0), 0u);
 }
 
+// The generic node's NMT machine in its own transition log (CiA 301 names, the command and its
+// sender as the cause) and in its machines (OFF only while unpowered).
+TEST_F(EdsNodeTest, NmtMachineRecordsEachTransitionWithItsCause) {
+  const auto nmt_entries = [&](std::uint64_t after) {
+    std::vector<devices::Transition> out;
+    device->transition_log().for_each_after(after, [&](const devices::Transition& t) {
+      EXPECT_EQ(t.machine, "nmt");  // its only machine
+      out.push_back(t);
+    });
+    return out;
+  };
+  const auto boot = nmt_entries(0);
+  ASSERT_EQ(boot.size(), 2u);
+  EXPECT_EQ(boot[0].from, "OFF");
+  EXPECT_EQ(boot[0].to, "INITIALISING");
+  EXPECT_EQ(boot[0].cause, devices::TransitionCause::Boot);
+  EXPECT_EQ(boot[1].transition, "boot-up");
+  EXPECT_EQ(boot[1].to, "PRE-OPERATIONAL");
+  const auto seq = device->transition_log().last_seq();
+  h->nmt(0x01, 5);
+  h->nmt(0x02, 0);
+  h->nmt(0x81, 5);
+  h->run_ticks(1);
+  const auto t = nmt_entries(seq);
+  ASSERT_EQ(t.size(), 4u);
+  EXPECT_EQ(t[0].transition, "NMT 01h");
+  EXPECT_EQ(t[0].to, "OPERATIONAL");
+  EXPECT_EQ(t[0].cause, devices::TransitionCause::NmtCommand);
+  EXPECT_EQ(t[0].detail, "the master");
+  EXPECT_EQ(t[1].transition, "NMT 02h");
+  EXPECT_EQ(t[1].from, "OPERATIONAL");
+  EXPECT_EQ(t[1].to, "STOPPED");
+  EXPECT_EQ(t[2].transition, "NMT 81h");
+  EXPECT_EQ(t[2].to, "INITIALISING");
+  EXPECT_EQ(t[3].transition, "boot-up");
+  EXPECT_EQ(t[3].cause, devices::TransitionCause::NmtCommand);
+  EXPECT_EQ(t[3].value, 0x81u);
+  auto machines = device->machines();
+  ASSERT_EQ(machines.size(), 1u);
+  EXPECT_EQ(machines[0].state, "PRE-OPERATIONAL");
+  device->power_off();
+  machines = device->machines();
+  EXPECT_EQ(machines[0].state, "OFF");
+  const auto off = nmt_entries(seq + 4);
+  ASSERT_EQ(off.size(), 1u);
+  EXPECT_EQ(off[0].to, "OFF");
+  EXPECT_EQ(off[0].cause, devices::TransitionCause::Power);
+}
+
 TEST_F(EdsNodeTest, TpdosGoOutOnSyncPerTheirTransmissionType) {
   od().set<std::uint8_t>(0x6000, 1, 0x12);
   od().set<std::uint8_t>(0x6000, 2, 0x34);
