@@ -9,18 +9,6 @@ namespace scenario {
 
 namespace {
 
-std::string address(std::uint16_t index, std::uint8_t sub) {
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "0x%04X:%02X", index, sub);
-  return buf;
-}
-
-std::string hex32(std::uint32_t v) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08X", v);
-  return buf;
-}
-
 RpdoFrame refused(std::string expected, std::string actual, std::optional<std::size_t> value = std::nullopt) {
   return RpdoFrame{std::nullopt, std::move(expected), std::move(actual), value};
 }
@@ -53,11 +41,11 @@ RpdoFrame build_rpdo(const canopen::ObjectDictionary& od, std::string_view node,
       std::size_t k = 0;
       while (k < values.size() && !(values[k].index == index && values[k].sub == sub)) ++k;
       const auto* obj = od.entry(index, sub);
-      if (k == values.size() || !obj) return refused("a value for every mapped object", address(index, sub) + " is mapped but not given");
+      if (k == values.size() || !obj) return refused("a value for every mapped object", object_address(index, sub) + " is mapped but not given");
       used[k] = true;
       std::vector<std::uint8_t> encoded;
       if (auto err = encode_literal(obj->type, values[k].value, encoded); !err.empty())
-        return refused(address(index, sub) + " value", err, k);
+        return refused(object_address(index, sub) + " value", err, k);
       bytes = canopen::resize_value(obj->type, encoded, len / 8);
     }
     for (std::size_t j = 0; j < bytes.size(); ++j) payload[bits / 8 + j] = bytes[j];
@@ -65,7 +53,7 @@ RpdoFrame build_rpdo(const canopen::ObjectDictionary& od, std::string_view node,
   }
   for (std::size_t k = 0; k < values.size(); ++k)
     if (!used[k])
-      return refused("objects mapped into RPDO " + std::to_string(pdo), address(values[k].index, values[k].sub) + " is not mapped", k);
+      return refused("objects mapped into RPDO " + std::to_string(pdo), object_address(values[k].index, values[k].sub) + " is not mapped", k);
   sim::CanFrame f = sim::CanFrame::data_frame(cob_id & 0x1FFFFFFFu, std::span<const std::uint8_t>(payload, bits / 8));
   f.extended = (cob_id & 0x20000000u) != 0;
   if (!f.extended) f.id &= 0x7FF;

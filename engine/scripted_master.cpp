@@ -9,22 +9,6 @@
 
 namespace scenario {
 
-namespace {
-
-std::string address(std::uint16_t index, std::uint8_t sub) {
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "0x%04X:%02X", index, sub);
-  return buf;
-}
-
-std::string hex32(std::uint32_t v) {
-  char buf[16];
-  std::snprintf(buf, sizeof buf, "0x%08X", v);
-  return buf;
-}
-
-}  // namespace
-
 /// Sends for the master on one bus and forwards everything the bus carries to it.
 struct ScriptedMaster::Endpoint final : sim::FrameReceiver, sim::FrameTap {
   ScriptedMaster* master = nullptr;
@@ -102,17 +86,17 @@ void ScriptedMaster::bind(Bound& b) {
           bind_node(a.target.node);
           bind_type(a.target);
           if (a.expect && a.expect->kind != Literal::Kind::Text && b.typed && canopen::is_variable_length(b.type))
-            throw LoadError(a.expect->mark, "expect: " + address(a.target.index, a.target.sub) + " is a string; quote the text");
+            throw LoadError(a.expect->mark, "expect: " + object_address(a.target.index, a.target.sub) + " is a string; quote the text");
         } else if constexpr (std::is_same_v<T, SdoWriteStep>) {
           bind_node(a.target.node);
           bind_type(a.target);
           if (a.data) {
             b.bytes = *a.data;
           } else if (!b.typed) {
-            throw LoadError(s.mark, "sdo_write " + address(a.target.index, a.target.sub) +
+            throw LoadError(s.mark, "sdo_write " + object_address(a.target.index, a.target.sub) +
                                         ": the type is unknown (not an object of an in-process node); give 'type:' or 'data:'");
           } else if (auto err = encode_literal(b.type, *a.value, b.bytes); !err.empty()) {
-            throw LoadError(a.value->mark, address(a.target.index, a.target.sub) + ": " + err);
+            throw LoadError(a.value->mark, object_address(a.target.index, a.target.sub) + ": " + err);
           }
         } else if constexpr (std::is_same_v<T, RpdoStep>) {
           bind_node(NodeRef{a.node, 0});
@@ -257,7 +241,7 @@ void ScriptedMaster::finish_sdo(Bound& b, sim::Time now) {
   const auto* wr = std::get_if<SdoWriteStep>(&s.action);
   const auto& target = rd ? rd->target : wr->target;
   const auto expect_abort = rd ? rd->expect_abort : wr->expect_abort;
-  const std::string where = address(target.index, target.sub);
+  const std::string where = object_address(target.index, target.sub);
   if (sdo_.state() == SdoClient::State::Failed) {
     // The client's own abort (e.g. 0x05040000 on a timeout) satisfies an expected abort too.
     if (expect_abort && *expect_abort == sdo_.abort_code()) {

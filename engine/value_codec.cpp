@@ -97,6 +97,18 @@ std::string hex_bytes(std::span<const std::uint8_t> bytes) {
   return s.empty() ? "(no data)" : s;
 }
 
+std::string object_address(std::uint16_t index, std::uint8_t sub) {
+  char buf[24];
+  std::snprintf(buf, sizeof buf, "0x%04X:%02X", index, sub);
+  return buf;
+}
+
+std::string hex32(std::uint32_t v) {
+  char buf[16];
+  std::snprintf(buf, sizeof buf, "0x%08X", v);
+  return buf;
+}
+
 std::string describe_bytes(DataType type, std::span<const std::uint8_t> bytes) {
   if (type == DataType::VisibleString) return "\"" + std::string(bytes.begin(), bytes.end()) + "\"";
   if (canopen::is_variable_length(type)) return hex_bytes(bytes);

@@ -26,5 +26,9 @@ double decode_number(canopen::DataType type, std::span<const std::uint8_t> bytes
 /// Bytes as text for messages: numbers as numbers (and hex for integers), strings quoted.
 std::string describe_bytes(canopen::DataType type, std::span<const std::uint8_t> bytes);
 std::string hex_bytes(std::span<const std::uint8_t> bytes);
+/// An object's address in messages: "0x6040:00".
+std::string object_address(std::uint16_t index, std::uint8_t sub);
+/// A 32-bit code in messages (abort codes, mapping entries): "0x06020000".
+std::string hex32(std::uint32_t v);
 
 }  // namespace scenario

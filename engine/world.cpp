@@ -10,12 +10,6 @@ namespace scenario {
 
 namespace {
 
-std::string address(std::uint16_t index, std::uint8_t sub) {
-  char buf[24];
-  std::snprintf(buf, sizeof buf, "0x%04X:%02X", index, sub);
-  return buf;
-}
-
 std::string port_names(const sim::PortList& ports, const std::string& prefix) {
   std::string s;
   for (const auto& p : ports) s += (s.empty() ? "" : ", ") + prefix + p.name;
@@ -124,15 +118,15 @@ void World::build_nodes(const Environment& env, bool strict_eds) {
     // Parameter overrides: the node's non-volatile memory at every power-on.
     for (const auto& o : spec.parameters) {
       const canopen::OdEntry* e = node.od().entry(o.index, o.sub);
-      if (!e) throw LoadError(o.mark, "node '" + spec.name + "' has no object " + address(o.index, o.sub));
-      if (!e->writable()) throw LoadError(o.mark, address(o.index, o.sub) + " of node '" + spec.name + "' is not writable");
+      if (!e) throw LoadError(o.mark, "node '" + spec.name + "' has no object " + object_address(o.index, o.sub));
+      if (!e->writable()) throw LoadError(o.mark, object_address(o.index, o.sub) + " of node '" + spec.name + "' is not writable");
       std::vector<std::uint8_t> bytes;
       if (auto err = encode_literal(e->type, o.value, bytes); !err.empty())
-        throw LoadError(o.value.mark, address(o.index, o.sub) + ": " + err);
+        throw LoadError(o.value.mark, object_address(o.index, o.sub) + ": " + err);
       if (!canopen::is_variable_length(e->type)) {
         if ((e->low_limit && canopen::compare_values(e->type, bytes, *e->low_limit) < 0) ||
             (e->high_limit && canopen::compare_values(e->type, bytes, *e->high_limit) > 0))
-          throw LoadError(o.value.mark, address(o.index, o.sub) + ": value " + o.value.text + " out of range [" +
+          throw LoadError(o.value.mark, object_address(o.index, o.sub) + ": value " + o.value.text + " out of range [" +
                                             (e->low_limit ? describe_bytes(e->type, *e->low_limit) : "-") + ", " +
                                             (e->high_limit ? describe_bytes(e->type, *e->high_limit) : "-") + "]");
       }
