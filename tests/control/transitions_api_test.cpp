@@ -323,7 +323,8 @@ TEST_F(TransitionsApi, PowerOffFaultIsOverOnceTheNodeHasPowerAgain) {
     EXPECT_TRUE(get("/api/faults").empty()) << again.dump() << " left " << get("/api/faults").dump();
     EXPECT_NE(listed_node("wdga")["nmt"], "OFF") << again.dump();
     EXPECT_EQ(get("/api/nodes/wdga/machines")["powered"], true);
-    for (const auto& m : get("/api/nodes/wdga/machines")["machines"]) EXPECT_NE(m["state"], "OFF") << m["machine"];
+    const json machines = get("/api/nodes/wdga/machines");  // the range below must not outlive it
+    for (const auto& m : machines["machines"]) EXPECT_NE(m["state"], "OFF") << m["machine"];
     // The stale fault: deleting it is a 404 and changes nothing; nor does its `for:` running out.
     EXPECT_EQ(status(p().http().Delete(("/api/faults/" + std::to_string(off["id"].get<int>())).c_str())), 404);
     p().run_ms(600);

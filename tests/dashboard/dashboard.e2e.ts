@@ -356,8 +356,13 @@ test('virtual time under the trainer: pause, one tick, run 100 ms, resume', asyn
   await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t), t1.t_us + t1.tick_us);
   await page.keyboard.press('r');
   await page.waitForFunction((t) => fetch('/api/clock').then((r) => r.json()).then((c) => c.t_us === t && c.paused), t1.t_us + t1.tick_us + 100_000);
-  // Space toggles what the page shows: wait until it shows the pause at the end of the run.
-  await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'paused');
+  // Space toggles what the page shows: wait until it shows the pause at the end of the run (the
+  // page showed "paused" before the run too, and a late "running" from the run's middle would turn
+  // Space into a second pause).
+  await page.waitForFunction((t) => {
+    const s = document.querySelector<HTMLElement>('[data-testid=clock-state]');
+    return s?.textContent === 'paused' && s.dataset.tUs === String(t);
+  }, t1.t_us + t1.tick_us + 100_000);
   await page.keyboard.press(' ');
   await page.waitForFunction(() => document.querySelector('[data-testid=clock-state]')?.textContent === 'running');
   // L: the lesson view and back.

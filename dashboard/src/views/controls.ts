@@ -81,5 +81,6 @@ export class ClockControls {
     this.hint.textContent = endReached && paused ? '(end of the scenario\'s duration: Resume goes on)' : '';
     this.state.dataset.paused = String(paused);
     this.state.dataset.endReached = String(endReached);
+    this.state.dataset.tUs = String(t_us);  // which clock reading the shown state belongs to
   }
 }
