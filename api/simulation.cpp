@@ -1,6 +1,6 @@
 // vplant::Simulation: the scenario engine's pieces (world, fault injector, scripted master,
 // nodes, plant) on one virtual-time scheduler, with the caller's endpoints and step functions
-// added. The tick is assembled as for engine/runner.cpp (engine/tick_assembly.h), minus outputs,
+// added. The tick is assembled as for engine/runner.cpp (engine/running/tick_assembly.h), minus outputs,
 // real time and the CLI's summary.
 #include <vplant/simulation.h>
 
@@ -9,15 +9,15 @@
 
 #include "api/frame_convert.h"
 #include "devices/device.h"
-#include "engine/environment.h"
-#include "engine/fault_codec.h"
-#include "engine/fault_injector.h"
-#include "engine/node_group.h"
-#include "engine/outcome.h"
-#include "engine/scenario_loader.h"
-#include "engine/scripted_master.h"
-#include "engine/tick_assembly.h"
-#include "engine/world.h"
+#include "engine/running/environment.h"
+#include "engine/loading/fault_codec.h"
+#include "engine/running/fault_injector.h"
+#include "engine/running/node_group.h"
+#include "engine/running/outcome.h"
+#include "engine/loading/scenario_loader.h"
+#include "engine/running/scripted_master.h"
+#include "engine/running/tick_assembly.h"
+#include "engine/running/world.h"
 #include "sim/scheduler.h"
 #include "sim/trace_writer.h"
 

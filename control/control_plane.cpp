@@ -17,14 +17,14 @@
 #include "control/server_thread_priority.h"
 #include "devices/canopen/nmt_command.h"
 #include "devices/canopen/sdo_abort.h"
-#include "engine/fault_codec.h"
-#include "engine/fault_injector.h"
-#include "engine/master_monitor.h"
-#include "engine/rpdo_frame.h"
-#include "engine/scenario.h"
-#include "engine/value_codec.h"
-#include "engine/yaml_fields.h"
-#include "engine/world.h"
+#include "engine/loading/fault_codec.h"
+#include "engine/running/fault_injector.h"
+#include "engine/running/master_monitor.h"
+#include "engine/running/rpdo_frame.h"
+#include "engine/loading/scenario.h"
+#include "engine/loading/value_codec.h"
+#include "engine/loading/yaml_fields.h"
+#include "engine/running/world.h"
 #include "sim/scheduler.h"
 #ifdef VPLANT_HAVE_DASHBOARD
 #include "dashboard/assets.h"
@@ -646,7 +646,7 @@ struct ControlPlane::Server {
     reply(res, 200, {{"ok", true}, {"queued", true}});
   }
 
-  /// The body is a fault as a scenario writes it, as JSON (engine/fault_codec.h, docs/api.md).
+  /// The body is a fault as a scenario writes it, as JSON (engine/loading/fault_codec.h, docs/api.md).
   static scenario::FaultSpec fault_spec(const http::Request& req) {
     parse_body(req);  // a JSON object (valid UTF-8), as every body of the API
     try {

@@ -12,7 +12,7 @@
 
 #include "control/exercise_host.h"
 #include "control/sim_bridge.h"
-#include "engine/run_extension.h"
+#include "engine/running/run_extension.h"
 
 namespace control {
 

@@ -5,7 +5,7 @@
 #include "control/json_views.h"
 #include "control/machine_views.h"
 #include "control/pdo_view.h"
-#include "engine/world.h"
+#include "engine/running/world.h"
 #include "sim/scheduler.h"
 #include "control/server_thread_priority.h"
 

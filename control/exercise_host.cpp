@@ -1,6 +1,6 @@
 #include "control/exercise_host.h"
 
-#include "engine/world.h"
+#include "engine/running/world.h"
 #include "sim/bus.h"
 #include "sim/scheduler.h"
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "control/sim_bridge.h"
-#include "engine/exercise.h"
-#include "engine/exercise_checker.h"
+#include "engine/loading/exercise.h"
+#include "engine/running/exercise_checker.h"
 
 namespace sim {
 class Scheduler;

@@ -4,7 +4,7 @@
 
 #include "devices/canopen/nmt_state.h"
 #include "devices/canopen/object_dictionary.h"
-#include "engine/value_codec.h"
+#include "engine/loading/value_codec.h"
 
 namespace control {
 

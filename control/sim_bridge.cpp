@@ -4,8 +4,8 @@
 #include <thread>
 
 #include "devices/canopen/emergency.h"
-#include "engine/scenario.h"
-#include "engine/world.h"
+#include "engine/loading/scenario.h"
+#include "engine/running/world.h"
 #include "sim/scheduler.h"
 
 namespace control {

@@ -27,9 +27,9 @@
 
 #include "control/live_state.h"
 #include "control/spsc_ring.h"
-#include "engine/run_extension.h"
-#include "engine/sdo_client.h"
-#include "engine/sync_producer.h"
+#include "engine/running/run_extension.h"
+#include "engine/running/sdo_client.h"
+#include "engine/running/sync_producer.h"
 #include "sim/bus.h"
 #include "sim/display_unit.h"
 

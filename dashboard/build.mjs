@@ -32,7 +32,7 @@ async function buildPage(outdir) {
   await mkdir(join(outdir, 'assets'), { recursive: true });
   await build({ ...browserBundle, entryPoints: { app: 'src/main.ts' }, outdir: join(outdir, 'assets') });
   await copyFile(join(here, 'index.html'), join(outdir, 'index.html'));
-  // The report (engine/report/): vplant writes these two files into the report folder.
+  // The report (engine/reporting/html/): vplant writes these two files into the report folder.
   await build({ ...browserBundle, entryPoints: { report: 'src/report/main.ts' }, outdir: join(outdir, 'report') });
   // The trainer's overview of `vplant classroom` (served at /, its files under /classroom/).
   await build({ ...browserBundle, entryPoints: { classroom: 'src/classroom/main.ts' }, outdir: join(outdir, 'classroom') });

@@ -22,10 +22,10 @@
 #include <string>
 #include <vector>
 
-#include "engine/environment.h"
-#include "engine/outcome.h"
-#include "engine/run_extension.h"
-#include "engine/scenario.h"
+#include "engine/running/environment.h"
+#include "engine/running/outcome.h"
+#include "engine/running/run_extension.h"
+#include "engine/loading/scenario.h"
 
 namespace sim {
 class Scheduler;
@@ -42,7 +42,7 @@ struct RunOptions {
   std::optional<sim::Duration> duration;   ///< --duration
   std::optional<std::uint64_t> seed;       ///< --seed
   std::string trace, csv, junit;           ///< override the scenario's outputs
-  std::string report_dir;                  ///< --report DIR: write this case into the HTML report (engine/report/)
+  std::string report_dir;                  ///< --report DIR: write this case into the HTML report (engine/reporting/html/)
   std::string master_report;               ///< --master-report: the master monitor's findings as JSON
   bool progress = false;                   ///< progress line on stderr (a terminal)
   bool quiet = false;                      ///< no summary (tests, benchmarks)
@@ -74,7 +74,7 @@ struct RunSummary {
   struct BusFrames {
     std::string name, wire;
     std::uint64_t frames = 0;
-    std::string load;  ///< timing, load, load per COB-ID (engine/bus_report.h)
+    std::string load;  ///< timing, load, load per COB-ID (engine/reporting/bus_report.h)
     std::uint64_t busy_bits = 0;  ///< bits the frames and error frames occupied
     std::uint32_t bit_rate = 0;   ///< the rate the bus was timed at
   };

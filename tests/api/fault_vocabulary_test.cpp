@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/environment.h"
+#include "engine/running/environment.h"
 #include "engine/runner.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 #include "tests/control/live_plant.h"
 #include "tests/support/read_file.h"
 #include "tests/support/temp_path.h"

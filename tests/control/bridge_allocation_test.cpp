@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "control/sim_bridge.h"
-#include "engine/environment.h"
+#include "engine/running/environment.h"
 #include "engine/runner.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 #include "tests/support/counting_allocator.h"
 
 namespace {

@@ -5,8 +5,8 @@
 
 #include <cstdio>
 
-#include "engine/environment.h"
-#include "engine/scenario_loader.h"
+#include "engine/running/environment.h"
+#include "engine/loading/scenario_loader.h"
 #include "tests/control/live_plant.h"
 
 namespace {
@@ -330,7 +330,7 @@ TEST_F(ControlApi, EveryFaultKind) {
     EXPECT_EQ(status(r), 200) << body.dump() << " → " << (r ? r->body : "");
     return r ? LivePlant::json_of(r) : json{};
   };
-  // The scenario's fault actions as JSON (engine/fault_codec.h): drop the HLT's TPDO2; bus-off;
+  // The scenario's fault actions as JSON (engine/loading/fault_codec.h): drop the HLT's TPDO2; bus-off;
   // power off; a plant parameter. Each one cleared.
   for (const auto& body : {json{{"drop", {{"bus", "main"}, {"id", "0x285"}}}},
                            json{{"bus_off", "md2"}},

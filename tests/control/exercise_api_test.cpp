@@ -3,8 +3,8 @@
 // with the step left open; selection errors answered with their reasons.
 #include <gtest/gtest.h>
 
-#include "engine/environment.h"
-#include "engine/scenario_loader.h"
+#include "engine/running/environment.h"
+#include "engine/loading/scenario_loader.h"
 #include "tests/control/live_plant.h"
 
 namespace {

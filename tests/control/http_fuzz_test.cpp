@@ -7,8 +7,8 @@
 #include <fstream>
 #include <random>
 
-#include "engine/environment.h"
-#include "engine/scenario_loader.h"
+#include "engine/running/environment.h"
+#include "engine/loading/scenario_loader.h"
 #include "tests/control/live_plant.h"
 #include "tests/control/raw_http.h"
 

@@ -2,8 +2,8 @@
 // virtual time: the SYNC producer, the RPDO sender by mapped values, the PDO mapping decode.
 #include <gtest/gtest.h>
 
-#include "engine/environment.h"
-#include "engine/scenario_loader.h"
+#include "engine/running/environment.h"
+#include "engine/loading/scenario_loader.h"
 #include "tests/control/live_plant.h"
 
 namespace {

@@ -14,9 +14,9 @@
 #include <thread>
 
 #include "control/control_plane.h"
-#include "engine/environment.h"
+#include "engine/running/environment.h"
 #include "engine/runner.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 
 namespace vtest {
 

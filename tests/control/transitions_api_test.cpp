@@ -9,8 +9,8 @@
 #include <mutex>
 #include <thread>
 
-#include "engine/environment.h"
-#include "engine/scenario_loader.h"
+#include "engine/running/environment.h"
+#include "engine/loading/scenario_loader.h"
 #include "tests/control/live_plant.h"
 
 namespace {

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "control/control_plane.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 #include "tests/control/live_plant.h"
 #include "tests/engine/test_world.h"
 

@@ -7,7 +7,7 @@
 
 #include "tests/engine/test_world.h"
 #include "engine/runner.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 
 namespace vtest {
 

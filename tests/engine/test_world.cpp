@@ -4,7 +4,7 @@
 
 #include "devices/canopen/emergency.h"
 #include "devices/canopen/standard_objects.h"
-#include "engine/yaml_fields.h"
+#include "engine/loading/yaml_fields.h"
 
 namespace vtest {
 

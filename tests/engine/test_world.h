@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "engine/environment.h"
+#include "engine/running/environment.h"
 
 namespace vtest {
 

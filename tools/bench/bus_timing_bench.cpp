@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "engine/runner.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 #include "sim/bus.h"
 #include "sim/can_bit_timing.h"
 

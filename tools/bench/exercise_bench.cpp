@@ -17,7 +17,7 @@
 
 #include "control/control_plane.h"
 #include "engine/runner.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 
 namespace {
 

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "engine/runner.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 
 namespace {
 

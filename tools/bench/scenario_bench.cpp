@@ -16,7 +16,7 @@
 #include <string>
 
 #include "engine/runner.h"
-#include "engine/scenario_loader.h"
+#include "engine/loading/scenario_loader.h"
 #include "sim/tick_profile.h"
 
 namespace {

@@ -15,7 +15,7 @@
 
 #include "control/classroom_server.h"
 #include "engine/runner.h"
-#include "engine/scenario_cases.h"
+#include "engine/loading/scenario_cases.h"
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exercise_folder.h"
 #include "tools/vplant/exit_codes.h"

@@ -1,13 +1,13 @@
 // `vplant dcf SCENARIO NODE`: the CiA 306 DCF of one node of a scenario, with the values and the
-// node-ID the scenario configures (engine/node_dcf.h). Exit 2 for a bad file, an unknown node or
+// node-ID the scenario configures (engine/reporting/node_dcf.h). Exit 2 for a bad file, an unknown node or
 // an output that cannot be written.
 #include <cstdio>
 #include <memory>
 #include <string>
 
-#include "engine/environment.h"
-#include "engine/node_dcf.h"
-#include "engine/scenario_loader.h"
+#include "engine/running/environment.h"
+#include "engine/reporting/node_dcf.h"
+#include "engine/loading/scenario_loader.h"
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exit_codes.h"
 #include "tools/vplant/text_output.h"

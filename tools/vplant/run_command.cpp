@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "control/control_plane.h"
-#include "engine/report/report_writer.h"
+#include "engine/reporting/html/report_writer.h"
 #include "engine/runner.h"
-#include "engine/yaml_fields.h"
+#include "engine/loading/yaml_fields.h"
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exercise_folder.h"
 #include "tools/vplant/exit_codes.h"

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "engine/scenario_cases.h"
-#include "engine/yaml_fields.h"
+#include "engine/loading/scenario_cases.h"
+#include "engine/loading/yaml_fields.h"
 
 namespace vplant {
 

@@ -1,5 +1,5 @@
 // Which cases `vplant test PATH...` runs: the scenario files under the paths, each file's cases
-// (its matrix combinations, engine/scenario_cases.h), then --filter and --shard.
+// (its matrix combinations, engine/loading/scenario_cases.h), then --filter and --shard.
 //
 // Scenario files: every `*.yaml` under a folder (recursively, hidden entries skipped) except
 // `*.plant.yaml`, the plant descriptions the scenarios include (scenarios/plant/); a file named

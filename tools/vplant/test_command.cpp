@@ -17,10 +17,10 @@
 #include <thread>
 #include <vector>
 
-#include "engine/junit_merge.h"
-#include "engine/report/report_writer.h"
-#include "engine/speed_text.h"
-#include "engine/yaml_fields.h"
+#include "engine/reporting/junit_merge.h"
+#include "engine/reporting/html/report_writer.h"
+#include "engine/reporting/speed_text.h"
+#include "engine/loading/yaml_fields.h"
 #include "tools/vplant/case_pool.h"
 #include "tools/vplant/commands.h"
 #include "tools/vplant/exit_codes.h"

@@ -1,4 +1,4 @@
-// The HTML report's page code (engine/report/report_writer.h writes the pages): the index or a
+// The HTML report's page code (engine/reporting/html/report_writer.h writes the pages): the index or a
 // case page, from the JSON the page carries inline (a page opened from file:// may not fetch).
 import 'uplot/dist/uPlot.min.css';
 import '../style.css';

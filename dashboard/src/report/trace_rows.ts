@@ -1,4 +1,4 @@
-// The report's trace rows (engine/report/report_writer.cpp writes one array per frame to keep the
+// The report's trace rows (engine/reporting/html/report_writer.cpp writes one array per frame to keep the
 // page small) back into the dashboard's Frame, so its trace view and filters take them as they are.
 import { candumpLine } from '../candump_export';
 import type { Frame } from '../types';

@@ -1,4 +1,4 @@
-// The report's data as vplant writes it (engine/report/report_writer.cpp): a case's summary
+// The report's data as vplant writes it (engine/reporting/html/report_writer.cpp): a case's summary
 // (cases/<id>/case.json, listed by the index) and the whole case inlined in its page.
 import type { TraceRow } from './trace_rows';
 
