@@ -11,7 +11,7 @@
 #include "engine/reporting/recorder.h"
 #include "engine/reporting/html/case_record.h"
 #include "engine/reporting/html/frame_capture.h"
-#include "engine/runner.h"
+#include "engine/running/run_summary.h"
 #include "engine/running/world.h"
 
 namespace scenario::report {
