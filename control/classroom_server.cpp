@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "control/http_server.h"
+#include "control/request_body.h"
 
 namespace control {
 
@@ -130,9 +131,13 @@ struct ClassroomServer::Impl {
     });
     // Every seat the same exercise: {"name": ...} as each seat's POST /api/exercise takes it.
     router.add("POST", "/api/seats/exercise", [this](http::Request& req, http::Response& res) {
-      const auto body = json::parse(req.body, nullptr, false);
-      if (!body.is_object() || !body.contains("name") || !body["name"].is_string())
-        return reply(res, 400, {{"error", "the body must be {\"name\": EXERCISE}"}});
+      try {  // the shape here; each seat checks the name against its exercises
+        RequestBody body(req.body, "the exercise choice");
+        body.text("name");
+        body.finish();
+      } catch (const BodyError& e) {
+        return reply(res, 400, {{"error", e.reason}});
+      }
       json a = json::array();
       int worst = 200;
       for (std::size_t k = 1; k <= seats.size(); ++k) {

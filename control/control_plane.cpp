@@ -13,6 +13,7 @@
 #include "control/http_server.h"
 #include "control/json_views.h"
 #include "control/pdo_view.h"
+#include "control/request_body.h"
 #include "control/machine_views.h"
 #include "control/server_thread_priority.h"
 #include "devices/canopen/nmt_command.h"
@@ -62,59 +63,13 @@ void reply(http::Response& res, int status, const json& body) {
   res.body = body.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
-json parse_body(const http::Request& req) {
-  json j = json::parse(req.body, nullptr, false);
-  if (j.is_discarded()) throw HttpError{400, "malformed JSON body"};
-  if (!j.is_object()) throw HttpError{400, "the body must be a JSON object"};
-  return j;
-}
-
-/// An integer field given as a number or as text ("0x6040", "24640").
-std::optional<std::int64_t> integer_field(const json& j, const char* key, std::int64_t lo, std::int64_t hi,
-                                          std::optional<std::int64_t> fallback = std::nullopt) {
-  if (!j.contains(key)) {
-    if (fallback) return fallback;
-    throw HttpError{400, std::string("missing field '") + key + "'"};
-  }
-  const auto& v = j[key];
-  std::int64_t n = 0;
-  if (v.is_number_integer()) {
-    n = v.get<std::int64_t>();
-  } else if (v.is_string()) {
-    const auto s = v.get<std::string>();
-    char* end = nullptr;
-    errno = 0;
-    n = std::strtoll(s.c_str(), &end, 0);
-    if (s.empty() || *end != '\0' || errno != 0) throw HttpError{400, std::string("field '") + key + "' is not an integer"};
-  } else {
-    throw HttpError{400, std::string("field '") + key + "' is not an integer"};
-  }
-  if (n < lo || n > hi)
-    throw HttpError{400, std::string("field '") + key + "' out of range " + std::to_string(lo) + ".." + std::to_string(hi)};
-  return n;
-}
-
-std::string string_field(const json& j, const char* key, std::optional<std::string> fallback = std::nullopt) {
-  if (!j.contains(key)) {
-    if (fallback) return *fallback;
-    throw HttpError{400, std::string("missing field '") + key + "'"};
-  }
-  if (!j[key].is_string()) throw HttpError{400, std::string("field '") + key + "' is not a string"};
-  return j[key].get<std::string>();
-}
-
-double number_field(const json& j, const char* key) {
-  if (!j.contains(key)) throw HttpError{400, std::string("missing field '") + key + "'"};
-  if (!j[key].is_number()) throw HttpError{400, std::string("field '") + key + "' is not a number"};
-  const double v = j[key].get<double>();
-  if (!std::isfinite(v)) throw HttpError{400, std::string("field '") + key + "' is not finite"};
-  return v;
-}
-
-bool bool_field(const json& j, const char* key, bool fallback) {
-  if (!j.contains(key)) return fallback;
-  if (!j[key].is_boolean()) throw HttpError{400, std::string("field '") + key + "' is not true/false"};
-  return j[key].get<bool>();
+/// An integer in a path or query parameter ("12", "0x0C"): the scenario's integer syntax.
+std::int64_t query_integer(const std::string& text, const char* what, std::int64_t lo, std::int64_t hi) {
+  const auto n = scenario::parse_integer(text);
+  if (!n) throw HttpError{400, std::string(what) + " '" + text + "' is not an integer"};
+  if (*n < lo || *n > hi)
+    throw HttpError{400, std::string(what) + " out of range " + std::to_string(lo) + ".." + std::to_string(hi)};
+  return *n;
 }
 
 std::vector<std::string> split_list(const std::string& s) {
@@ -279,6 +234,8 @@ struct ControlPlane::Server {
         h(req, res);
       } catch (const HttpError& e) {
         reply(res, e.status, {{"error", e.reason}});
+      } catch (const BodyError& e) {
+        reply(res, 400, {{"error", e.reason}});
       } catch (const std::exception& e) {
         reply(res, 500, {{"error", std::string("internal error: ") + e.what()}});
       }
@@ -544,54 +501,41 @@ struct ControlPlane::Server {
 
   void sdo_write(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
-    const auto body = parse_body(req);
-    const auto index = static_cast<std::uint16_t>(*integer_field(body, "index", 0, 0xFFFF));
-    const auto sub = static_cast<std::uint8_t>(*integer_field(body, "sub", 0, 0xFF, 0));
+    RequestBody body(req.body, "the SDO write");
+    const auto index = static_cast<std::uint16_t>(body.integer("index", 0, 0xFFFF));
+    const auto sub = static_cast<std::uint8_t>(body.integer_or("sub", 0, 0xFF).value_or(0));
     const auto* entry = catalog.find(i, index, sub);
     std::vector<std::uint8_t> data;
-    if (body.contains("data")) {
-      if (!body["data"].is_string() || !parse_hex(body["data"].get<std::string>(), data, 4096) || data.empty())
-        throw HttpError{400, "field 'data' must be 1..4096 bytes of hex, e.g. \"0F00\""};
-    } else if (body.contains("value")) {
+    if (body.has("data") && body.has("value")) throw HttpError{400, "give 'value' or 'data', not both"};
+    if (body.has("data")) {
+      data = body.bytes("data", 1, 4096);
+    } else if (body.has("value")) {
       if (!entry)
         throw HttpError{400, "node '" + node_names[i] + "' has no object " + abort_hex(index).substr(6) +
                                  ":" + std::to_string(sub) + " (give \"data\" to send the request anyway)"};
-      scenario::Literal lit;
-      const auto& v = body["value"];
-      if (v.is_number_integer()) {
-        lit.kind = scenario::Literal::Kind::Integer;
-        lit.integer = v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX)
-                          ? throw HttpError{400, "value out of range"}
-                          : v.get<std::int64_t>();
-      } else if (v.is_number()) {
-        lit.kind = scenario::Literal::Kind::Real;
-        lit.real = v.get<double>();
-      } else if (v.is_string()) {
-        lit.kind = scenario::Literal::Kind::Text;
-        lit.text = v.get<std::string>();
-      } else {
-        throw HttpError{400, "field 'value' must be a number or a string"};
-      }
-      if (auto err = scenario::encode_literal(entry->type, lit, data); !err.empty()) throw HttpError{400, err};
+      if (auto err = scenario::encode_literal(entry->type, body.literal("value"), data); !err.empty()) throw HttpError{400, err};
     } else {
       throw HttpError{400, "give 'value' or 'data'"};
     }
+    body.finish();
     sdo_transfer(i, false, index, sub, std::move(data), entry, res);
   }
 
   void sdo_read(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
-    const auto body = parse_body(req);
-    const auto index = static_cast<std::uint16_t>(*integer_field(body, "index", 0, 0xFFFF));
-    const auto sub = static_cast<std::uint8_t>(*integer_field(body, "sub", 0, 0xFF, 0));
+    RequestBody body(req.body, "the SDO read");
+    const auto index = static_cast<std::uint16_t>(body.integer("index", 0, 0xFFFF));
+    const auto sub = static_cast<std::uint8_t>(body.integer_or("sub", 0, 0xFF).value_or(0));
+    body.finish();
     sdo_transfer(i, true, index, sub, {}, catalog.find(i, index, sub), res);
   }
 
   void set_input(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
-    const auto body = parse_body(req);
-    const auto name = string_field(body, "name");
-    const double value = number_field(body, "value");
+    RequestBody body(req.body, "the input");
+    const auto name = body.text("name");
+    const double value = body.number("value");
+    body.finish();
     const auto err = call<std::string>([i, name, value](const scenario::RunContext& c) {
       return c.world.nodes()[i].device->set_input(name, value);
     });
@@ -600,13 +544,12 @@ struct ControlPlane::Server {
   }
 
   void nmt(const http::Request& req, http::Response& res) {
-    const auto body = parse_body(req);
-    const auto command = canopen::parse_nmt_command(string_field(body, "command"));
+    RequestBody body(req.body, "the NMT command");
+    const auto command = canopen::parse_nmt_command(body.text("command"));
     if (!command) throw HttpError{400, "field 'command' must be " + std::string(canopen::kNmtCommandWords)};
-    if (!body.contains("node")) throw HttpError{400, "missing field 'node' (a node's name, or 0 for all)"};
     std::optional<std::size_t> target;
-    if (body["node"].is_string()) target = node(body["node"].get<std::string>());
-    else if (*integer_field(body, "node", 0, 0) != 0) throw HttpError{400, "field 'node' must be a node's name or 0"};
+    if (const auto name = body.node_or_all("node", false)) target = node(*name);
+    body.finish();
     const auto cmd = static_cast<std::uint8_t>(*command);
     call<bool>([this, cmd, target](const scenario::RunContext& c) {
       auto& world = c.world;
@@ -625,18 +568,18 @@ struct ControlPlane::Server {
   }
 
   void send_frame(const http::Request& req, http::Response& res) {
-    const auto body = parse_body(req);
-    const auto bus_name = string_field(body, "bus", bus_names.front());
+    RequestBody body(req.body, "the frame");
+    const auto bus_name = body.text_or("bus").value_or(bus_names.front());
+    const bool ext = body.flag_or("extended", false);
+    const bool rtr = body.flag_or("rtr", false);
+    const auto id = static_cast<std::uint32_t>(body.integer("id", 0, ext ? sim::CanFrame::kMaxExtId : sim::CanFrame::kMaxStdId));
+    std::vector<std::uint8_t> data;
+    if (body.has("data")) data = body.bytes("data", 0, 8);
+    const auto dlc = static_cast<std::uint8_t>(body.integer_or("dlc", 0, 8).value_or(0));
+    body.finish();
     const auto b = bus_index.find(bus_name);
     if (b == bus_index.end()) throw HttpError{404, "no bus '" + bus_name + "'"};
-    const bool ext = bool_field(body, "extended", false);
-    const bool rtr = bool_field(body, "rtr", false);
-    const auto id = static_cast<std::uint32_t>(*integer_field(body, "id", 0, ext ? sim::CanFrame::kMaxExtId : sim::CanFrame::kMaxStdId));
-    std::vector<std::uint8_t> data;
-    if (body.contains("data") && (!body["data"].is_string() || !parse_hex(body["data"].get<std::string>(), data, 8)))
-      throw HttpError{400, "field 'data' must be 0..8 bytes of hex"};
-    sim::CanFrame f = rtr ? sim::CanFrame::remote_frame(id, static_cast<std::uint8_t>(*integer_field(body, "dlc", 0, 8, 0)))
-                          : sim::CanFrame::data_frame(id, data);
+    sim::CanFrame f = rtr ? sim::CanFrame::remote_frame(id, dlc) : sim::CanFrame::data_frame(id, data);
     f.extended = ext;
     const auto bus = b->second;
     const bool queued = call<bool>([this, bus, f](const scenario::RunContext&) { return cp.bridge_.send_frame(bus, f); });
@@ -648,7 +591,7 @@ struct ControlPlane::Server {
 
   /// The body is a fault as a scenario writes it, as JSON (engine/loading/fault_codec.h, docs/api.md).
   static scenario::FaultSpec fault_spec(const http::Request& req) {
-    parse_body(req);  // a JSON object (valid UTF-8), as every body of the API
+    RequestBody::parse(req.body);  // a JSON object (valid UTF-8), as every body of the API
     try {
       return scenario::parse_fault(req.body, "<body>");
     } catch (const scenario::LoadError& e) {
@@ -712,8 +655,7 @@ struct ControlPlane::Server {
   }
 
   void clear_fault(const http::Request& req, http::Response& res) {
-    json q = {{"id", std::string(req.matches[1])}};
-    const int id = static_cast<int>(*integer_field(q, "id", 1, INT32_MAX));
+    const int id = static_cast<int>(query_integer(std::string(req.matches[1]), "fault id", 1, INT32_MAX));
     const bool found = call<bool>([this, id](const scenario::RunContext& c) {
       auto& faults = cp.bridge_.live_faults(c.scheduler.now().time_since_epoch().count());
       for (auto it = faults.begin(); it != faults.end(); ++it) {
@@ -760,16 +702,15 @@ struct ControlPlane::Server {
   }
 
   void clock_control(const http::Request& req, http::Response& res) {
-    const auto body = parse_body(req);
-    const auto action = string_field(body, "action");
+    RequestBody body(req.body, "the clock action");
+    const auto action = body.text("action");
+    const auto speed = body.number_or("speed");
+    if (speed && *speed != 0 && (*speed < kMinSpeed || *speed > kMaxSpeed))
+      throw HttpError{400, "field 'speed' must be 0 (as fast as possible) or 0.001..1000 (× wall clock)"};
+    const auto ms = action == "run" ? body.integer("ms", 1, 3600000) : 0;
+    body.finish();
     need_run();
     if (cp.bridge_.clock().realtime) throw HttpError{409, "the clock is real time: it cannot be paused or stepped"};
-    std::optional<double> speed;
-    if (body.contains("speed")) {
-      speed = number_field(body, "speed");
-      if (*speed != 0 && (*speed < kMinSpeed || *speed > kMaxSpeed))
-        throw HttpError{400, "field 'speed' must be 0 (as fast as possible) or 0.001..1000 (× wall clock)"};
-    }
     bool ok = false;
     if (action == "pause") {
       ok = cp.bridge_.pause();
@@ -778,7 +719,6 @@ struct ControlPlane::Server {
     } else if (action == "step") {
       ok = cp.bridge_.run_ticks(1);
     } else if (action == "run") {
-      const auto ms = *integer_field(body, "ms", 1, 3600000);
       const auto tick = cp.bridge_.clock().tick_us;
       ok = cp.bridge_.run_ticks(static_cast<std::uint64_t>((ms * 1000 + tick - 1) / tick));
     } else {
@@ -810,10 +750,12 @@ struct ControlPlane::Server {
   }
 
   void sync_control(const http::Request& req, http::Response& res) {
-    const auto body = parse_body(req);
-    const auto bus = bus_of_request(string_field(body, "bus", ""));
-    const auto period_ms = *integer_field(body, "period_ms", 0, kMaxSyncPeriodMs);
-    const auto overflow = static_cast<std::uint8_t>(*integer_field(body, "counter_overflow", 0, 240, 0));
+    RequestBody body(req.body, "the SYNC producer");
+    const auto bus_name = body.text_or("bus").value_or("");
+    const auto period_ms = body.integer("period_ms", 0, kMaxSyncPeriodMs);
+    const auto overflow = static_cast<std::uint8_t>(body.integer_or("counter_overflow", 0, 240).value_or(0));
+    body.finish();
+    const auto bus = bus_of_request(bus_name);
     if (overflow == 1) throw HttpError{400, "field 'counter_overflow' must be 0 (no counter) or 2..240 (CiA 301 1019h)"};
     need_run();
     const auto tick_us = cp.bridge_.clock().tick_us;
@@ -835,30 +777,21 @@ struct ControlPlane::Server {
 
   void rpdo(const http::Request& req, http::Response& res) {
     const auto i = node(req.matches[1]);
-    const auto body = parse_body(req);
-    const int pdo = static_cast<int>(*integer_field(body, "pdo", 1, 512));
-    if (!body.contains("values") || !body["values"].is_object())
-      throw HttpError{400, "field 'values' must be an object of mapped objects and their values, e.g. {\"6040:00\": 15}"};
+    RequestBody body(req.body, "the RPDO");
+    const int pdo = static_cast<int>(body.integer("pdo", 1, 512));
+    const auto mapped = body.get("values");
+    if (!mapped.IsMap())
+      throw HttpError{400, body.at(mapped) + ": 'values' must be an object of mapped objects and their values, e.g. {\"6040:00\": 15}"};
+    body.finish();
     std::vector<scenario::ParameterOverride> values;
-    for (const auto& [key, v] : body["values"].items()) {
+    for (const auto& kv : mapped) {
+      const auto key = kv.first.Scalar();
       const auto address = parse_object_key(key);
-      if (!address) throw HttpError{400, "'" + key + "' is not an object address (INDEX:SUB in hex, e.g. 6040:00)"};
+      if (!address) throw HttpError{400, body.at(kv.first) + ": '" + key + "' is not an object address (INDEX:SUB in hex, e.g. 6040:00)"};
       scenario::ParameterOverride o;
       o.index = address->first;
       o.sub = address->second;
-      if (v.is_number_integer()) {
-        if (v.is_number_unsigned() && v.get<std::uint64_t>() > static_cast<std::uint64_t>(INT64_MAX))
-          throw HttpError{400, key + ": value out of range"};
-        o.value.integer = v.get<std::int64_t>();
-      } else if (v.is_number()) {
-        o.value.kind = scenario::Literal::Kind::Real;
-        o.value.real = v.get<double>();
-      } else if (v.is_string()) {
-        o.value.kind = scenario::Literal::Kind::Text;
-        o.value.text = v.get<std::string>();
-      } else {
-        throw HttpError{400, key + ": the value must be a number or a string"};
-      }
+      o.value = read_body([&] { return scenario::read_literal(kv.second, body.file(), key); });
       values.push_back(std::move(o));
     }
     // By value: a command that waits past the timeout still runs later.
@@ -880,12 +813,11 @@ struct ControlPlane::Server {
 
   /// The node whose dictionary a stream carries ("od" deltas): {"stream": ID, "node": NAME|null}.
   void select_node(const http::Request& req, http::Response& res) {
-    const auto body = parse_body(req);
-    const auto id = static_cast<std::uint64_t>(*integer_field(body, "stream", 1, INT64_MAX));
-    if (!body.contains("node")) throw HttpError{400, "missing field 'node' (a node's name, or null for none)"};
+    RequestBody body(req.body, "the stream's node");
+    const auto id = static_cast<std::uint64_t>(body.integer("stream", 1, INT64_MAX));
     int selected = -1;
-    if (body["node"].is_string()) selected = static_cast<int>(node(body["node"].get<std::string>()));
-    else if (!body["node"].is_null()) throw HttpError{400, "field 'node' must be a node's name or null"};
+    if (const auto name = body.node_or_all("node", true)) selected = static_cast<int>(node(*name));
+    body.finish();
     need_run();
     if (!hub->select_node(id, selected))
       throw HttpError{404, "no stream " + std::to_string(id) + " that may choose a node (a shared read-only stream may not)"};
@@ -906,8 +838,7 @@ struct ControlPlane::Server {
       const auto list = signal_list(req.param("signals"));
       double rate = 10;
       if (req.has_param("rate")) {
-        json q = {{"rate", req.param("rate")}};
-        rate = static_cast<double>(*integer_field(q, "rate", 1, 50));
+        rate = static_cast<double>(query_integer(req.param("rate"), "rate", 1, 50));
       }
       const int selected = req.has_param("node") ? static_cast<int>(node(req.param("node"))) : -1;
       auto client = hub->open(list, rate, selected);

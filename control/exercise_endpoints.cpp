@@ -5,6 +5,7 @@
 
 #include "control/exercise_host.h"
 #include "control/http_server.h"
+#include "control/request_body.h"
 
 namespace control {
 
@@ -82,10 +83,16 @@ void ExerciseHost::add_routes(http::Router& router) {
     answer(res, 200, exercise_json(between_ticks<View>(bridge_, [this](const scenario::RunContext&) { return view(); })));
   }));
   router.add("POST", "/api/exercise", answering([this](const http::Request& req, http::Response& res) {
-    const json body = json::parse(req.body, nullptr, false);
-    if (body.is_discarded() || !body.is_object()) throw ExerciseError{400, "the body must be a JSON object {\"name\": …}"};
-    if (!body.contains("name") || !body["name"].is_string()) throw ExerciseError{400, "field 'name' must be an exercise's name"};
-    const auto name = body["name"].get<std::string>();
+    const auto name = [&] {
+      try {
+        RequestBody body(req.body, "the exercise choice");
+        auto n = body.text("name");
+        body.finish();
+        return n;
+      } catch (const BodyError& e) {
+        throw ExerciseError{400, e.reason};
+      }
+    }();
     if (!scenario::valid_exercise_name(name))
       throw ExerciseError{400, "'" + name + "' is not an exercise name (letters, digits, '_', '-', at most 64)"};
     if (dir_.empty()) throw ExerciseError{404, "no exercise '" + name + "': this plant has no exercises folder (--exercises DIR)"};

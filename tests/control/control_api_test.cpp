@@ -404,6 +404,28 @@ TEST_F(ControlApi, BadRequestsGet4xxWithAReason) {
   EXPECT_EQ(status(p().http().Post("/api/nmt", huge, "application/json")), 413);
 }
 
+// A body is read as strictly as a scenario file: a misspelt optional key is refused with its place,
+// not ignored (here `subindex` would have read object 1018:00 instead of 1018:01).
+TEST_F(ControlApi, BodiesAreReadLikeAScenarioFile) {
+  auto error_of = [&](const char* path, const char* body) {
+    const auto r = p().http().Post(path, body, "application/json");
+    EXPECT_EQ(status(r), 400) << path << " " << body;
+    return LivePlant::json_of(r)["error"].get<std::string>();
+  };
+  EXPECT_EQ(error_of("/api/nodes/dsv/sdo/read", R"({"index": "0x1018", "subindex": 1})"),
+            "<body>:1:21: unknown key 'subindex' in the SDO read (known: index, sub)");
+  EXPECT_EQ(error_of("/api/nmt", R"({"command": "start", "node": "dsv", "node": "md2"})"),
+            "<body>:1:37: the NMT command: duplicate key 'node'");
+  EXPECT_EQ(error_of("/api/nmt", R"({"command": "start", "node": [2]})"), "<body>:1:30: node: a node's name or 0");
+  EXPECT_EQ(error_of("/api/clock", R"({"action": "run", "ms": "soon"})"), "<body>:1:25: ms: 'soon' is not an integer");
+  EXPECT_EQ(error_of("/api/frames", R"({"id": 1792, "data": "0F0"})"), "<body>:1:22: data: '0F0' is not a sequence of hex bytes");
+  EXPECT_EQ(error_of("/api/sync", R"({"period_ms": 10, "overflow": 4})"),
+            "<body>:1:19: unknown key 'overflow' in the SYNC producer (known: bus, period_ms, counter_overflow)");
+  // The same fields spelt right are taken: integers as numbers or text in the scenario's syntax.
+  EXPECT_EQ(status(p().post("/api/nodes/dsv/sdo/read", {{"index", "0x1018"}, {"sub", 1}})), 200);
+  EXPECT_EQ(status(p().post("/api/frames", {{"id", 0x700}, {"data", "0f 00"}})), 200);
+}
+
 TEST_F(ControlApi, ForeignHostOrOriginIsRefused) {
   const std::string self = "127.0.0.1:" + std::to_string(p().port());
   auto r = p().http().Get("/api/nodes", {{"Host", "evil.example:" + std::to_string(p().port())}});

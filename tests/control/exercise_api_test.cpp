@@ -86,7 +86,11 @@ TEST_F(ExerciseApi, ListsTheShippedExercises) {
 TEST_F(ExerciseApi, BadSelectionsAreRefusedWithAReason) {
   EXPECT_EQ(status(p().post("/api/exercise", {{"name", "no-such"}})), 404);
   EXPECT_EQ(status(p().post("/api/exercise", {{"name", "../CMakeLists"}})), 400);
-  EXPECT_EQ(status(p().post("/api/exercise", {{"name", 3}})), 400);
+  EXPECT_EQ(status(p().post("/api/exercise", {{"name", {1, 2}}})), 400);
+  EXPECT_EQ(status(p().post("/api/exercise", {{"nam", "nmt"}})), 400);
+  const auto extra = p().post("/api/exercise", {{"name", "nmt"}, {"step", 2}});
+  EXPECT_EQ(status(extra), 400);
+  EXPECT_NE(LivePlant::json_of(extra)["error"].get<std::string>().find("unknown key 'step'"), std::string::npos);
   EXPECT_EQ(status(p().http().Post("/api/exercise", "[", "application/json")), 400);
   const auto r = p().post("/api/exercise", {{"name", "no-such"}});
   EXPECT_NE(LivePlant::json_of(r)["error"].get<std::string>().find("no exercise 'no-such'"), std::string::npos);
