@@ -1,7 +1,10 @@
 // The exercise endpoints (control/exercise_endpoints.cpp) on the reference plant in virtual time:
 // each shipped exercise solved through the HTTP API with every step done, and the wrong thing done
-// with the step left open; selection errors answered with their reasons.
+// with the step left open; selection errors answered with their reasons; the stream's `exercise`
+// event on connect, on a selection and when a step is done.
 #include <gtest/gtest.h>
+
+#include <mutex>
 
 #include "engine/environment.h"
 #include "engine/scenario_loader.h"
@@ -81,6 +84,66 @@ TEST_F(ExerciseApi, ListsTheShippedExercises) {
   const auto none = get("/api/exercise");
   EXPECT_TRUE(none["name"].is_null());
   EXPECT_TRUE(none["steps"].empty());
+}
+
+/// The data of every `exercise` event in a stream's text, in order.
+std::vector<json> exercise_events(const std::string& stream) {
+  std::vector<json> out;
+  const std::string head = "event: exercise\ndata: ";
+  for (auto at = stream.find(head); at != std::string::npos; at = stream.find(head, at + 1)) {
+    const auto from = at + head.size();
+    const auto end = stream.find('\n', from);
+    if (end == std::string::npos) break;  // not whole yet
+    out.push_back(json::parse(stream.substr(from, end - from)));
+  }
+  return out;
+}
+
+TEST_F(ExerciseApi, TheStreamSendsTheExerciseOnConnectOnSelectionAndWhenAStepIsDone) {
+  std::string stream;
+  std::mutex mu;
+  std::atomic<bool> stop{false};
+  httplib::Client sse("127.0.0.1", p().port());
+  sse.set_read_timeout(5, 0);
+  std::thread reader([&] {
+    sse.Get("/api/events", [&](const char* data, std::size_t n) {
+      std::lock_guard lk(mu);
+      stream.append(data, n);
+      return !stop.load();
+    });
+  });
+  // Waits until the stream holds `n` exercise events; returns them.
+  const auto wait_for = [&](std::size_t n) {
+    for (int i = 0; i < 150; ++i) {
+      {
+        std::lock_guard lk(mu);
+        if (auto e = exercise_events(stream); e.size() >= n) return e;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    std::lock_guard lk(mu);
+    return exercise_events(stream);
+  };
+  auto events = wait_for(1);  // on connect: none selected
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_TRUE(events[0]["name"].is_null());
+  select("nmt");
+  events = wait_for(2);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[1]["name"], "nmt");
+  EXPECT_EQ(events[1]["current"], 0);
+  EXPECT_FALSE(events[1]["steps"][0]["done"].get<bool>());
+  nmt("start", "dsv");  // step 1 done
+  events = wait_for(3);
+  ASSERT_EQ(events.size(), 3u);
+  EXPECT_TRUE(events[2]["steps"][0]["done"].get<bool>());
+  EXPECT_EQ(events[2]["steps"][0]["t_us"], get("/api/exercise")["steps"][0]["t_us"]);
+  EXPECT_EQ(events[2]["current"], 1);
+  nmt("start", "md2");  // no step done: no event
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(wait_for(3).size(), 3u);
+  stop = true;
+  reader.join();
 }
 
 TEST_F(ExerciseApi, BadSelectionsAreRefusedWithAReason) {
