@@ -30,7 +30,7 @@ export class TransitionList {
     this.body.replaceChildren(...entries.slice(-ROWS).reverse().map((t) =>
       el('tr', { 'data-seq': t.seq, 'data-machine': t.machine, 'data-transition': t.transition },
         el('td', { class: 'mono' }, formatTime(t.t_us)),
-        el('td', { class: 'mono' }, t.machine),
+        el('td', { class: 'mono' }, ...t.machine.split('.').flatMap((part, i, all) => (i < all.length - 1 ? [`${part}.`, el('wbr')] : [part]))),
         el('td', { class: 'states' }, ...breakable(`${t.from} → ${t.to}`)),
         el('td', { class: 'mono' }, t.transition),
         el('td', { class: 'cause' }, t.evidence || t.cause))));
