@@ -4,8 +4,6 @@
 // event on connect, on a selection and when a step is done.
 #include <gtest/gtest.h>
 
-#include <mutex>
-
 #include "engine/environment.h"
 #include "engine/scenario_loader.h"
 #include "tests/control/live_plant.h"
@@ -100,29 +98,14 @@ std::vector<json> exercise_events(const std::string& stream) {
 }
 
 TEST_F(ExerciseApi, TheStreamSendsTheExerciseOnConnectOnSelectionAndWhenAStepIsDone) {
-  std::string stream;
-  std::mutex mu;
-  std::atomic<bool> stop{false};
-  httplib::Client sse("127.0.0.1", p().port());
-  sse.set_read_timeout(5, 0);
-  std::thread reader([&] {
-    sse.Get("/api/events", [&](const char* data, std::size_t n) {
-      std::lock_guard lk(mu);
-      stream.append(data, n);
-      return !stop.load();
-    });
-  });
+  vtest::StreamCapture stream(p().port(), "");
   // Waits until the stream holds `n` exercise events; returns them.
   const auto wait_for = [&](std::size_t n) {
     for (int i = 0; i < 150; ++i) {
-      {
-        std::lock_guard lk(mu);
-        if (auto e = exercise_events(stream); e.size() >= n) return e;
-      }
+      if (auto e = exercise_events(stream.text()); e.size() >= n) return e;
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    std::lock_guard lk(mu);
-    return exercise_events(stream);
+    return exercise_events(stream.text());
   };
   auto events = wait_for(1);  // on connect: none selected
   ASSERT_EQ(events.size(), 1u);
@@ -142,8 +125,6 @@ TEST_F(ExerciseApi, TheStreamSendsTheExerciseOnConnectOnSelectionAndWhenAStepIsD
   nmt("start", "md2");  // no step done: no event
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   EXPECT_EQ(wait_for(3).size(), 3u);
-  stop = true;
-  reader.join();
 }
 
 TEST_F(ExerciseApi, BadSelectionsAreRefusedWithAReason) {
