@@ -186,7 +186,7 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
   }
 }
 
-bool EventHub::exercise_changed() {
+bool EventHub::refresh_exercise() {
   if (!exercises_) return false;
   const auto version = exercises_->version();  // before the read: a change during it is sent next time
   if (version == exercise_version_) return false;
@@ -339,7 +339,7 @@ void EventHub::batch() {
   const bool restarted = restarts != restarts_seen_;
   restarts_seen_ = restarts;
 
-  const bool exercise_changed = this->exercise_changed();
+  const bool exercise_changed = refresh_exercise();
 
   std::vector<std::string> tables(clients.size());
   if (const auto now = std::chrono::steady_clock::now(); now >= next_tables_) {

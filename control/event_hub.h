@@ -83,7 +83,7 @@ class EventHub {
   void live_tables(const std::vector<std::shared_ptr<Client>>& clients, std::vector<std::string>& out);
   std::string nodes_event(const std::vector<NodeStatus>& nodes) const;
   /// True when the exercise's state changed since the last call (exercise_event_ holds it).
-  bool exercise_changed();
+  bool refresh_exercise();
 
   SimBridge& bridge_;
   const DictionaryCatalog& catalog_;
