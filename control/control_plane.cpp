@@ -899,7 +899,7 @@ void ControlPlane::attach(const scenario::RunContext& context) {
   if (s.hub) return;  // a restart (POST /api/restart): the same scenario, server and streams
   s.build_static(context);
   s.hub = std::make_unique<EventHub>(bridge_, s.catalog, StreamTopology{s.bus_names, s.node_names, s.node_bus},
-                                     options_.max_streams);
+                                     options_.max_streams, &exercises_);
   s.hub->start();
   s.routes();
   routed_ = true;

@@ -41,8 +41,9 @@ bool EventHub::Client::next(std::string& out, std::chrono::milliseconds timeout)
   return !closed_;
 }
 
-EventHub::EventHub(SimBridge& bridge, const DictionaryCatalog& catalog, StreamTopology topology, std::size_t max_clients)
-    : bridge_(bridge), catalog_(catalog), topo_(std::move(topology)), max_clients_(max_clients) {
+EventHub::EventHub(SimBridge& bridge, const DictionaryCatalog& catalog, StreamTopology topology, std::size_t max_clients,
+                   ExerciseHost* exercises)
+    : bridge_(bridge), catalog_(catalog), topo_(std::move(topology)), max_clients_(max_clients), exercises_(exercises) {
   for (std::size_t b = 0; b < topo_.bus_names.size(); ++b)
     decoders_.push_back(std::make_unique<BusDecoderContext>(catalog_, static_cast<int>(b)));
   captured_.reserve(bridge_.frames().capacity());
@@ -183,6 +184,18 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
                                 {"display", std::move(display)}}
                      .dump());
   }
+}
+
+bool EventHub::refresh_exercise() {
+  if (!exercises_) return false;
+  const auto version = exercises_->version();  // before the read: a change during it is sent next time
+  if (version == exercise_version_) return false;
+  auto state = exercises_->state_json(kLiveTableWait);
+  if (state.empty()) return false;  // the scheduler is busy: next batch
+  exercise_version_ = version;
+  if (state == exercise_event_) return false;
+  exercise_event_ = std::move(state);
+  return true;
 }
 
 std::size_t EventHub::clients() const {
@@ -326,6 +339,8 @@ void EventHub::batch() {
   const bool restarted = restarts != restarts_seen_;
   restarts_seen_ = restarts;
 
+  const bool exercise_changed = refresh_exercise();
+
   std::vector<std::string> tables(clients.size());
   if (const auto now = std::chrono::steady_clock::now(); now >= next_tables_) {
     next_tables_ = now + kLiveTablePeriod;
@@ -343,6 +358,7 @@ void EventHub::batch() {
     if (restarted && c.greeted_) append_event(out, "restart", nlohmann::json{{"restarts", restarts}, {"t_us", clock.t_us}}.dump());
     if (!c.greeted_ || nodes_changed) append_event(out, "nodes", nodes_event_);
     if (!c.greeted_ || clock_changed) append_event(out, "clock", clock_event);
+    if ((!c.greeted_ || exercise_changed) && !exercise_event_.empty()) append_event(out, "exercise", exercise_event_);
     c.greeted_ = true;
     if (!per_client[i].first.empty()) {
       nlohmann::json values = nlohmann::json::object();

@@ -5,7 +5,8 @@
 // scheduler could not capture because the hub was behind, and, faster than real time, those older
 // than the newest batch-long stretch of simulated time (decoding costs the same at any speed).
 // Every 20 ms it asks the scheduler for a node snapshot (the scheduler
-// takes none on its own while the clock runs).
+// takes none on its own while the clock runs). The exercise's state goes out as an `exercise`
+// event on connect and whenever the selection or a step's done-state changed.
 #pragma once
 
 #include <condition_variable>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "control/dictionary_catalog.h"
+#include "control/exercise_host.h"
 #include "control/sim_bridge.h"
 
 namespace control {
@@ -53,7 +55,9 @@ class EventHub {
     std::string faults_sent_;
   };
 
-  EventHub(SimBridge& bridge, const DictionaryCatalog& catalog, StreamTopology topology, std::size_t max_clients);
+  /// `exercises`: the plant's exercise (its state is streamed); null for none.
+  EventHub(SimBridge& bridge, const DictionaryCatalog& catalog, StreamTopology topology, std::size_t max_clients,
+           ExerciseHost* exercises = nullptr);
   ~EventHub();
   EventHub(const EventHub&) = delete;
   EventHub& operator=(const EventHub&) = delete;
@@ -78,11 +82,14 @@ class EventHub {
   /// ticks, as "od" deltas and "faults" events for the clients that want them.
   void live_tables(const std::vector<std::shared_ptr<Client>>& clients, std::vector<std::string>& out);
   std::string nodes_event(const std::vector<NodeStatus>& nodes) const;
+  /// True when the exercise's state changed since the last call (exercise_event_ holds it).
+  bool refresh_exercise();
 
   SimBridge& bridge_;
   const DictionaryCatalog& catalog_;
   StreamTopology topo_;
   std::size_t max_clients_;
+  ExerciseHost* exercises_;
   std::vector<std::unique_ptr<BusDecoderContext>> decoders_;
 
   mutable std::mutex mu_;
@@ -94,6 +101,8 @@ class EventHub {
   // Hub thread state.
   std::uint64_t node_version_ = ~0ULL, pdo_version_ = ~0ULL, dropped_seen_ = 0;
   std::uint64_t restarts_seen_ = 0;
+  std::uint64_t exercise_version_ = ~0ULL;
+  std::string exercise_event_;  ///< the exercise's state as last sent ("" before the first read)
   std::uint64_t next_id_ = 0;
   std::chrono::steady_clock::time_point next_tables_{};
   std::chrono::steady_clock::time_point last_batch_wall_{};  ///< faster than real time: the frames' window

@@ -1,6 +1,7 @@
 // The exercise endpoints (docs/api.md, "Exercises"): GET /api/exercises (the names in the
 // folder), POST /api/exercise {"name"} (select; progress starts again), GET /api/exercise (the
-// selection with each step's instruction and whether and when it was done).
+// selection with each step's instruction and whether and when it was done), and the same body
+// for the stream's `exercise` event (ExerciseHost::state_json).
 #include <nlohmann/json.hpp>
 
 #include "control/exercise_host.h"
@@ -74,6 +75,12 @@ json exercise_json(const ExerciseHost::View& v) {
 }
 
 }  // namespace
+
+std::string ExerciseHost::state_json(std::chrono::milliseconds wait) {
+  if (!bridge_.attached() || bridge_.finished()) return {};
+  auto v = bridge_.call<View>([this](const scenario::RunContext&) { return view(); }, wait);
+  return v ? exercise_json(*v).dump(-1, ' ', false, json::error_handler_t::replace) : std::string();
+}
 
 void ExerciseHost::add_routes(http::Router& router) {
   router.add("GET", "/api/exercises", answering([this](const http::Request&, http::Response& res) {

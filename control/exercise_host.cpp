@@ -44,10 +44,14 @@ void ExerciseHost::select(std::shared_ptr<const scenario::Exercise> exercise, sc
   auto checker = std::make_unique<scenario::ExerciseChecker>(*exercise, world);  // throws before anything changes
   checker_ = std::move(checker);
   exercise_ = std::move(exercise);
+  version_.fetch_add(1, std::memory_order_release);
 }
 
 void ExerciseHost::check() {
-  if (checker_) checker_->check(scheduler_->now().time_since_epoch().count());
+  if (!checker_) return;
+  const auto before = checker_->current();
+  checker_->check(scheduler_->now().time_since_epoch().count());
+  if (checker_->current() != before) version_.fetch_add(1, std::memory_order_release);  // a step is done
 }
 
 ExerciseHost::View ExerciseHost::view() const {

@@ -5,6 +5,8 @@
 // seat, and with it one ExerciseHost.
 #pragma once
 
+#include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -43,6 +45,12 @@ class ExerciseHost {
   /// GET /api/exercises, POST /api/exercise, GET /api/exercise (control/exercise_endpoints.cpp).
   void add_routes(http::Router& router);
   const std::string& dir() const { return dir_; }
+  /// Counts the changes the stream's `exercise` event reports: a selection (also the one a
+  /// restart binds anew) and every step that became done.
+  std::uint64_t version() const { return version_.load(std::memory_order_acquire); }
+  /// The selection and its progress as GET /api/exercise answers it, read between ticks; "" when
+  /// the scheduler did not answer within `wait` (the event hub asks again later).
+  std::string state_json(std::chrono::milliseconds wait);
 
   /// A copy of the selection and its progress, taken between ticks.
   struct View {
@@ -64,6 +72,7 @@ class ExerciseHost {
   std::vector<std::unique_ptr<Tap>> taps_;
   std::shared_ptr<const scenario::Exercise> exercise_;
   std::unique_ptr<scenario::ExerciseChecker> checker_;
+  std::atomic<std::uint64_t> version_{0};
 };
 
 }  // namespace control

@@ -1,6 +1,7 @@
 // The control-plane API (docs/api.md) as typed calls. Every call goes to the page's own origin,
 // relative to the page: under `vplant classroom` a seat's page is /seats/K/ and its API /seats/K/api/.
 import type { ActiveFault, ClockState, FindingsPage, Frame, NodeInfo, NodeMachines, OdEntry, OdEvent, Pdo, Scenario, SdoResult, SignalBatch, StreamHello, Transition } from './types';
+import type { ExerciseState } from './views/exercise_view';
 
 export class ApiError extends Error {
   constructor(readonly status: number, message: string) {
@@ -77,6 +78,8 @@ export interface StreamHandlers {
   od(o: OdEvent): void;
   /** The live faults, on connect and when they change. */
   faults(f: ActiveFault[]): void;
+  /** The exercise and its progress (GET /api/exercise's body): on connect, on a selection, when a step is done. */
+  exercise(e: ExerciseState): void;
   connection(open: boolean): void;
 }
 
@@ -97,6 +100,7 @@ export function openStream(signals: readonly string[], rateHz: number, node: str
   on('hello', h.hello);
   on('od', h.od);
   on('faults', h.faults);
+  on('exercise', h.exercise);
   es.onopen = () => h.connection(true);
   es.onerror = () => h.connection(false);
   return es;

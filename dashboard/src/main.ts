@@ -174,6 +174,13 @@ async function main(): Promise<void> {
     nodeTable.update(store.live, store.selected);
     drawDetail();
   });
+  // The CiA 406 words' bit names come from the devices' descriptions, read once per node.
+  for (const n of sc.nodes.filter((n) => n.profile === 'cia406')) {
+    api.machines(n.name).then((m) => {
+      nodeTable.setMachines(n.name, m.machines);
+      nodeTable.update(store.live, store.selected);
+    }).catch(() => undefined);  // without them the words stay in hex
+  }
 
   function onSelected(): void {
     const node = store.selected;
@@ -343,6 +350,7 @@ async function main(): Promise<void> {
         else if (odPending.push(o) > 64) odPending.shift();  // bounded: a full event comes with every selection
       },
       faults: (f) => faults.showActive(f),
+      exercise: (e) => exercise.show(e),
       connection: (open) => {
         const s = $('connection');
         s.textContent = open ? 'live' : 'disconnected';
@@ -362,6 +370,7 @@ async function main(): Promise<void> {
     toggle.textContent = on ? 'Full console' : 'Lesson view';
     toggle.setAttribute('aria-pressed', String(on));
     trace.onlyNode(on ? nodeOf(store.selected)?.node_id ?? null : null);
+    detail.setLesson(on);
     history.replaceState(null, '', on ? '#lesson' : location.pathname + location.search);
   }
   toggle.addEventListener('click', () => setLesson(!lesson));
@@ -374,10 +383,10 @@ async function main(): Promise<void> {
 
   store.setNodes(await api.nodes());
   onSelected();
+  const exercise = mountExerciseView(document.querySelector('main') ?? document.body);
   connect(plotDefault);
   // The verdict has no stream event; a shared read-only stream carries no dictionary.
   setInterval(() => void refreshFindings(), 2000);
-  mountExerciseView(document.querySelector('main') ?? document.body);
   setInterval(() => { if (streamShared && !lesson) void refreshOd(); }, 1000);
 }
 

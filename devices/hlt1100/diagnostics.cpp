@@ -12,7 +12,8 @@ using canopen::SdoAbort;
 
 Diagnostics::Diagnostics(canopen::Node& node, const Settings& settings) : node_(node), settings_(settings) {}
 
-void Diagnostics::bind() {
+void Diagnostics::bind(cia406::StatusRecorder& recorder) {
+  recorder_ = &recorder;
   auto& od = node_.od();
   alarms_entry_ = od.entry(obj::kAlarms, 0);
   count_entry_ = od.entry(obj::kErrorField, 0);
@@ -77,6 +78,7 @@ void Diagnostics::set_alarm(std::uint16_t bit, bool active) {
   if (was == active) return;
   alarms_ = static_cast<std::uint16_t>(active ? (alarms_ | bit) : (alarms_ & ~bit));
   if (active) {
+    if (recorder_) recorder_->raised_by_fault(cia406::StatusRecorder::Word::Alarms, bit, emcy_code(bit));
     record(emcy_code(bit));
     emcy(emcy_code(bit));
   } else {

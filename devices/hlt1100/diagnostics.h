@@ -12,6 +12,7 @@
 
 #include "devices/canopen/node.h"
 #include "devices/hlt1100/hlt1100_settings.h"
+#include "devices/profiles/cia406/status_machines.h"
 
 namespace hlt1100 {
 
@@ -28,8 +29,9 @@ inline constexpr std::uint16_t kEmcyParameter = 0x6300;
 class Diagnostics {
  public:
   Diagnostics(canopen::Node& node, const Settings& settings);
-  /// Installs the 0x1001 read side effect and the 0x1003 write rule.
-  void bind();
+  /// Installs the 0x1001 read side effect and the 0x1003 write rule; an alarm's setting is
+  /// recorded in `recorder` as the device fault with its EMCY code.
+  void bind(cia406::StatusRecorder& recorder);
 
   /// Sets or clears an alarm bit of 6503h; a change sends its EMCY.
   void set_alarm(std::uint16_t bit, bool active);
@@ -66,6 +68,7 @@ class Diagnostics {
   std::array<Pending, 16> queue_{};  // EMCYs go out from process(), after the frame that caused them
   std::size_t queued_ = 0;
   std::uint8_t published_register_ = 0;
+  cia406::StatusRecorder* recorder_ = nullptr;
   canopen::OdEntry* alarms_entry_ = nullptr;
   canopen::OdEntry* count_entry_ = nullptr;
   canopen::OdEntry* last_entry_entry_ = nullptr;  // EMCY 0x0000 owed after 0x1001 reads (sent after the SDO answer)

@@ -53,7 +53,7 @@ SdoAbort Application::parameter_out_of_range(const OdEntry& entry, std::span<std
 
 void Application::bind() {
   auto& od = node_.od();
-  diagnostics_.bind();
+  diagnostics_.bind(status_recorder_);
   position_ = od.entry(obj::kPosition, 1);
   speed_ = od.entry(obj::kSpeed, 1);
   status_ = od.entry(obj::kOperatingStatus, 0);

@@ -12,7 +12,8 @@ using canopen::SdoAbort;
 
 Diagnostics::Diagnostics(canopen::Node& node, const Settings& settings) : node_(node), settings_(settings) {}
 
-void Diagnostics::bind() {
+void Diagnostics::bind(cia406::StatusRecorder& recorder) {
+  recorder_ = &recorder;
   auto& od = node_.od();
   // 2504h:00 is rw: writing 0 clears the warning history [R].
   od.add_check(obj::kWarningHistory, 0, [](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
@@ -67,8 +68,9 @@ void Diagnostics::signal(std::uint16_t code, std::uint8_t register_bits, canopen
   node_.emergency().signal(code, register_bits, info);
 }
 
-void Diagnostics::set_alarms(std::uint16_t alarms) {
+void Diagnostics::set_alarms(std::uint16_t alarms, std::uint16_t emcy_code) {
   if (alarms == alarms_) return;
+  if (recorder_) recorder_->raised_by_fault(cia406::StatusRecorder::Word::Alarms, alarms & ~alarms_, emcy_code);
   if (alarms & ~alarms_) push(alarm_history_, alarm_count_, alarms, obj::kAlarmHistory);
   alarms_ = alarms;
   node_.od().set<std::uint16_t>(obj::kAlarms, 0, alarms);
@@ -79,6 +81,11 @@ void Diagnostics::set_warnings(std::uint16_t warnings) {
   if (warnings & ~warnings_) push(warning_history_, warning_count_, warnings, obj::kWarningHistory);
   warnings_ = warnings;
   node_.od().set<std::uint16_t>(obj::kWarnings, 0, warnings);
+}
+
+void Diagnostics::set_warnings(std::uint16_t warnings, std::uint16_t emcy_code) {
+  if (recorder_) recorder_->raised_by_fault(cia406::StatusRecorder::Word::Warnings, warnings & ~warnings_, emcy_code);
+  set_warnings(warnings);
 }
 
 void Diagnostics::set_status(std::uint32_t bits, bool on) {

@@ -9,6 +9,7 @@
 
 #include "devices/canopen/emergency.h"
 #include "devices/canopen/node.h"
+#include "devices/profiles/cia406/status_machines.h"
 #include "devices/wdga/wdga_settings.h"
 
 namespace wdga {
@@ -24,7 +25,9 @@ inline constexpr std::uint8_t kErGeneric = 0x01, kErTemperature = 0x08, kErCommu
 class Diagnostics {
  public:
   Diagnostics(canopen::Node& node, const Settings& settings);
-  void bind();
+  /// Installs the histories' hooks; a bit set by a fault is recorded in `recorder` as the
+  /// device fault with its EMCY code.
+  void bind(cia406::StatusRecorder& recorder);
 
   /// A lasting error condition: EMCY (once), 0x1003 and 2502h.
   void raise(std::uint16_t code, std::uint8_t register_bits, canopen::Emergency::Info info = {});
@@ -34,8 +37,12 @@ class Diagnostics {
   /// An EMCY the stack raised itself (heartbeat consumer, life guarding): 2502h only.
   void record_error(std::uint16_t code, const canopen::Emergency::Info& info = {});
 
-  void set_alarms(std::uint16_t alarms);      ///< 6503h (2503h on a rising edge)
+  /// 6503h (2503h on a rising edge); the bits it sets come from a device fault with EMCY
+  /// `emcy_code` (0: none documented).
+  void set_alarms(std::uint16_t alarms, std::uint16_t emcy_code);
   void set_warnings(std::uint16_t warnings);  ///< 6505h (2504h on a rising edge)
+  /// 6505h, the bits it sets come from a device fault with EMCY `emcy_code`.
+  void set_warnings(std::uint16_t warnings, std::uint16_t emcy_code);
   std::uint16_t warnings() const { return warnings_; }
   void set_status(std::uint32_t bits, bool on);  ///< 1002h
 
@@ -50,6 +57,7 @@ class Diagnostics {
 
   canopen::Node& node_;
   const Settings& settings_;
+  cia406::StatusRecorder* recorder_ = nullptr;
   std::array<std::uint32_t, 5> errors_{};
   std::array<std::uint16_t, 5> alarm_history_{}, warning_history_{};
   std::uint8_t error_count_ = 0, alarm_count_ = 0, warning_count_ = 0;

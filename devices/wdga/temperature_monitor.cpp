@@ -68,7 +68,7 @@ void TemperatureMonitor::sample() {
   if (info == kInfoHigh) warnings |= kWarnOverTemperature;
   if (info == kInfoLow) warnings |= kWarnUnderTemperature;
   if (info == kInfoRead) warnings |= kWarnTemperatureRead;
-  diagnostics_.set_warnings(warnings);
+  diagnostics_.set_warnings(warnings, kEmcyTemperature);  // a temperature excursion is a device fault
   // One EMCY per excursion [M "einmaliger Temperaturalarm"]; register 08h only.
   if (info != 0 && excursion_ == 0) diagnostics_.raise(kEmcyTemperature, kErTemperature, {info, 0, 0, 0, 0});
   if (info == 0 && excursion_ != 0) diagnostics_.clear(kEmcyTemperature);

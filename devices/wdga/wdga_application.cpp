@@ -58,7 +58,7 @@ Application::Application(canopen::Node& node, const Settings& settings)
       temperature_(node.od(), diagnostics_, settings.temperature_period_s) {}
 
 void Application::bind() {
-  diagnostics_.bind();
+  diagnostics_.bind(status_recorder_);
   temperature_.bind();
   bind_node_objects();
   bind_measurement_objects();
@@ -332,7 +332,7 @@ void Application::set_eeprom_failure(bool failing) {
 void Application::set_position_error(bool active) {
   if (active == position_error_) return;
   position_error_ = active;
-  diagnostics_.set_alarms(active ? 0x0001 : 0x0000);
+  diagnostics_.set_alarms(active ? 0x0001 : 0x0000, settings_.position_error_emcy);
   diagnostics_.set_status(settings_.multiturn ? kStatusMultiturnError : kStatusSingleturnError, active);
   // No EMCY code is documented for the position error: register bit 0 only, or a knob.
   if (settings_.position_error_emcy != 0) {

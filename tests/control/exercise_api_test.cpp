@@ -1,6 +1,7 @@
 // The exercise endpoints (control/exercise_endpoints.cpp) on the reference plant in virtual time:
 // each shipped exercise solved through the HTTP API with every step done, and the wrong thing done
-// with the step left open; selection errors answered with their reasons.
+// with the step left open; selection errors answered with their reasons; the stream's `exercise`
+// event on connect, on a selection and when a step is done.
 #include <gtest/gtest.h>
 
 #include "engine/running/environment.h"
@@ -81,6 +82,49 @@ TEST_F(ExerciseApi, ListsTheShippedExercises) {
   const auto none = get("/api/exercise");
   EXPECT_TRUE(none["name"].is_null());
   EXPECT_TRUE(none["steps"].empty());
+}
+
+/// The data of every `exercise` event in a stream's text, in order.
+std::vector<json> exercise_events(const std::string& stream) {
+  std::vector<json> out;
+  const std::string head = "event: exercise\ndata: ";
+  for (auto at = stream.find(head); at != std::string::npos; at = stream.find(head, at + 1)) {
+    const auto from = at + head.size();
+    const auto end = stream.find('\n', from);
+    if (end == std::string::npos) break;  // not whole yet
+    out.push_back(json::parse(stream.substr(from, end - from)));
+  }
+  return out;
+}
+
+TEST_F(ExerciseApi, TheStreamSendsTheExerciseOnConnectOnSelectionAndWhenAStepIsDone) {
+  vtest::StreamCapture stream(p().port(), "");
+  // Waits until the stream holds `n` exercise events; returns them.
+  const auto wait_for = [&](std::size_t n) {
+    for (int i = 0; i < 150; ++i) {
+      if (auto e = exercise_events(stream.text()); e.size() >= n) return e;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return exercise_events(stream.text());
+  };
+  auto events = wait_for(1);  // on connect: none selected
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_TRUE(events[0]["name"].is_null());
+  select("nmt");
+  events = wait_for(2);
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[1]["name"], "nmt");
+  EXPECT_EQ(events[1]["current"], 0);
+  EXPECT_FALSE(events[1]["steps"][0]["done"].get<bool>());
+  nmt("start", "dsv");  // step 1 done
+  events = wait_for(3);
+  ASSERT_EQ(events.size(), 3u);
+  EXPECT_TRUE(events[2]["steps"][0]["done"].get<bool>());
+  EXPECT_EQ(events[2]["steps"][0]["t_us"], get("/api/exercise")["steps"][0]["t_us"]);
+  EXPECT_EQ(events[2]["current"], 1);
+  nmt("start", "md2");  // no step done: no event
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(wait_for(3).size(), 3u);
 }
 
 TEST_F(ExerciseApi, BadSelectionsAreRefusedWithAReason) {

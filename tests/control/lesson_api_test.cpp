@@ -32,30 +32,13 @@ class LessonApi : public ::testing::Test {
   }
   /// Stream text received while `during` runs.
   std::string stream_during(const std::string& query, const std::function<void()>& during, const std::string& until) {
-    std::string stream;
-    std::mutex mu;
-    std::atomic<bool> stop{false};
-    httplib::Client sse("127.0.0.1", p().port());
-    sse.set_read_timeout(5, 0);
-    std::thread reader([&] {
-      sse.Get(("/api/events" + query).c_str(), [&](const char* data, std::size_t n) {
-        std::lock_guard lk(mu);
-        stream.append(data, n);
-        return !stop.load();
-      });
-    });
+    vtest::StreamCapture stream(p().port(), query);
     std::this_thread::sleep_for(std::chrono::milliseconds(150));
     during();
-    for (int i = 0; i < 150; ++i) {
-      {
-        std::lock_guard lk(mu);
-        if (stream.find(until) != std::string::npos) break;
-      }
+    for (int i = 0; i < 150 && stream.text().find(until) == std::string::npos; ++i)
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    stop = true;
-    reader.join();
-    return stream;
+    stream.stop();
+    return stream.text();
   }
 
   static LivePlant* plant_;

@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <mutex>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
@@ -108,6 +109,41 @@ class LivePlant {
   std::atomic<int> rc_{-1};
   std::FILE* out_ = nullptr;
   std::unique_ptr<httplib::Client> client_;
+};
+
+/// The text of a plant's live stream (GET /api/events + query) as it arrives, read on a thread of
+/// its own until stop() or destruction.
+class StreamCapture {
+ public:
+  StreamCapture(int port, const std::string& query) : client_("127.0.0.1", port) {
+    client_.set_read_timeout(5, 0);
+    reader_ = std::thread([this, query] {
+      client_.Get(("/api/events" + query).c_str(), [this](const char* data, std::size_t n) {
+        std::lock_guard lk(mu_);
+        text_.append(data, n);
+        return !stop_.load();
+      });
+    });
+  }
+  ~StreamCapture() { stop(); }
+  StreamCapture(const StreamCapture&) = delete;
+  StreamCapture& operator=(const StreamCapture&) = delete;
+
+  std::string text() {
+    std::lock_guard lk(mu_);
+    return text_;
+  }
+  void stop() {
+    stop_ = true;
+    if (reader_.joinable()) reader_.join();
+  }
+
+ private:
+  httplib::Client client_;
+  std::mutex mu_;
+  std::string text_;
+  std::atomic<bool> stop_{false};
+  std::thread reader_;
 };
 
 }  // namespace vtest

@@ -402,6 +402,10 @@ TEST_F(TransitionsApi, Cia406BitsAreNamedMachines) {
   EXPECT_EQ(a[0]["from"], "none");
   EXPECT_EQ(a[0]["to"], "position error");
   EXPECT_EQ(a[0]["transition"], "set");
+  // Raised by the device fault: its EMCY code (the HLT 1100's position error, FF00h) is the evidence.
+  EXPECT_EQ(a[0]["cause"], "device_fault");
+  EXPECT_EQ(a[0]["value"], 0xFF00);
+  EXPECT_EQ(a[0]["evidence"], "device fault position error (EMCY FF00h)");
   EXPECT_EQ(a[1]["to"], "none");
   EXPECT_EQ(a[1]["evidence"], "Alarms 6503h (CiA 406) = 0x0000");
 }

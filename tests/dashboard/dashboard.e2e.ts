@@ -267,6 +267,12 @@ test('"magnet lost" on the HLT 1100: the decoded EMCY, then the fault cleared', 
   const emcyText = await page.locator('[data-testid=trace-table] tbody tr[data-service=EMCY] td.decoded').first().textContent();
   assert.match(emcyText ?? '', /EMCY/);
   await page.waitForSelector('[data-testid=emcy-list] li');
+  // The node table names the alarm bit (the name served by the device, not a hex word), and the
+  // transition list names the fault with its EMCY code as the cause.
+  await page.waitForFunction(() => /alarms: position error/.test(document.querySelector('[data-testid=device-hlt]')?.textContent ?? ''));
+  assert.match((await byTestId('device-hlt').textContent()) ?? '', /status: .*warnings: none/s);
+  await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=transition-list] tbody tr[data-machine="cia406.alarms"] td.cause')]
+    .some((td) => /device fault position error \(EMCY [0-9A-F]{4}h\)/.test(td.textContent ?? '')));
   await shot('hlt-magnet-lost');
   await byTestId('trace-service-EMCY').waitFor();
   await shot('trace-emcy', 'trace-section');
@@ -500,6 +506,11 @@ test('no panel overlaps another at 1366×768 and 1920×1080, 100 % and 150 %; th
             }
           }
           assert.ok(L.scrollWidth <= L.innerWidth + 1, `${name}: the page is wider than the window (${L.scrollWidth} > ${L.innerWidth})`);
+          // No empty band between the header and the first panel.
+          const top = Math.min(...L.boxes.map((b) => b.y));
+          assert.ok(top - L.header <= 12, `${name}: ${top - L.header} px between the header and the first panel`);
+          // The CiA 406 encoders' words by their bits' names.
+          await p.waitForFunction(() => /status: [a-z].*alarms: none/s.test(document.querySelector('[data-testid=device-wdga]')?.textContent ?? ''));
           if (lesson) {
             // the exercise panel is there when the server has exercises (GET /api/exercises)
             const exercises = await p.evaluate(async () => ((await (await fetch('api/exercises')).json()) as string[]).length > 0);
@@ -514,6 +525,34 @@ test('no panel overlaps another at 1366×768 and 1920×1080, 100 % and 150 %; th
             assert.ok(diagram.h >= 120 && diagram.y >= detail.y && diagram.bottom <= detail.y + detail.h + 1,
               `${name}: the DSP 408 diagram is not whole in its panel: ${JSON.stringify([diagram, detail])}`);
             assert.ok(L.scrollHeight <= L.innerHeight + 1, `${name}: the lesson view scrolls (${L.scrollHeight} > ${L.innerHeight})`);
+            // The diagram is the largest thing on the screen, its state names legible from a
+            // projector (the font as rendered, after the drawing is scaled to its panel).
+            const drawn = await p.evaluate(() => {
+              const svgEl = document.querySelector('[data-machine=dsp408] svg')!;
+              const r = svgEl.getBoundingClientRect();
+              const text = svgEl.querySelector('.state text') as SVGGraphicsElement;
+              return { area: r.width * r.height, namePx: text.getScreenCTM()!.a * parseFloat(getComputedStyle(text).fontSize) };
+            });
+            for (const b of L.boxes.filter((b) => b.id !== 'detail-section')) {
+              assert.ok(drawn.area > b.w * b.h, `${name}: ${b.id} (${b.w}×${b.h}) is larger than the diagram (${drawn.area} px²)`);
+            }
+            assert.ok(drawn.namePx >= 10, `${name}: the diagram's state names in ${drawn.namePx.toFixed(1)} px`);
+            // NMT has its own tab and is drawn as large.
+            await p.getByTestId('machine-tab-nmt').click();
+            const nmtPx = await p.evaluate(() => {
+              const text = document.querySelector('[data-machine=nmt] svg .state text') as SVGGraphicsElement;
+              return text.getScreenCTM()!.a * parseFloat(getComputedStyle(text).fontSize);
+            });
+            assert.ok(nmtPx >= 10, `${name}: the NMT diagram's state names in ${nmtPx.toFixed(1)} px`);
+            await p.getByTestId('machine-tab-dsp408').click();
+            // Every column of the transition list readable: no cell runs past its panel or the window.
+            const cut = await p.evaluate(() => {
+              const panel = document.getElementById('transitions-section')!.getBoundingClientRect();
+              return [...document.querySelectorAll('[data-testid=transition-list] th, [data-testid=transition-list] td')]
+                .map((c) => ({ text: (c.textContent ?? '').slice(0, 30), right: c.getBoundingClientRect().right }))
+                .filter((c) => c.right > Math.min(panel.right, window.innerWidth) + 1);
+            });
+            assert.deepEqual(cut, [], `${name}: transition list cells cut off at the right`);
             for (const b of L.boxes) {
               assert.ok(b.y >= L.header - 1 && b.y + b.h <= L.innerHeight + 1 && b.h >= (b.id === 'exercise-section' ? 20 : 60), `${name}: ${b.id} is not on the screen: ${JSON.stringify(b)}`);
             }

@@ -1,7 +1,8 @@
 // The exercise beside the plant (docs/exercises.md): its title and introduction, each step's
 // instruction and hint, and a done mark with the virtual time the plant saw the goal met. The
-// checking is the plant's (GET /api/exercise); this view only shows it, polled once a second.
-// A trainee may choose another exercise of the folder (GET /api/exercises, POST /api/exercise).
+// checking is the plant's; this view only shows it, as the stream's `exercise` event brings it
+// (on connect, on a selection, when a step is done: no poll). A trainee may choose another
+// exercise of the folder (GET /api/exercises once, POST /api/exercise).
 import { relative } from '../api';
 import { el } from '../dom';
 
@@ -92,8 +93,13 @@ function renderRow(r: StepRow): HTMLElement {
   return li;
 }
 
-/// Adds the exercise panel at the top of `host` and keeps it current.
-export function mountExerciseView(host: HTMLElement, periodMs = 1000): void {
+export interface ExerciseView {
+  /// The stream's `exercise` event.
+  show(state: ExerciseState): void;
+}
+
+/// Adds the exercise panel at the top of `host`; the caller hands it the stream's events.
+export function mountExerciseView(host: HTMLElement): ExerciseView {
   // The whole width of the page's grid: a chooser alone stays one line, and the panels below keep
   // their places whether an exercise is open or not.
   const section = el('section', {
@@ -111,8 +117,14 @@ export function mountExerciseView(host: HTMLElement, periodMs = 1000): void {
   section.append(el('h2', { id: 'exercise-h' }, 'Exercise ', choose, ' ', status), body);
   host.prepend(section);
   let last = '';
+  let pending: ExerciseState | null = null;  // an event that came before the chooser had its names
+  let ready = false;
 
   function show(state: ExerciseState): void {
+    if (!ready) {
+      pending = state;
+      return;
+    }
     const text = JSON.stringify(state);
     if (text === last) return;  // nothing changed: keep the DOM (and an open hint) as it is
     last = text;
@@ -130,9 +142,9 @@ export function mountExerciseView(host: HTMLElement, periodMs = 1000): void {
     if (names.length === 0) return;  // no exercises folder: no panel
     choose.append(el('option', { value: '' }, '(none)'), ...names.map((n) => el('option', { value: n }, n)));
     section.hidden = false;
-    const poll = () => getJson<ExerciseState>('/api/exercise').then(show).catch(() => undefined);
-    await poll();
-    setInterval(() => void poll(), periodMs);
+    ready = true;
+    if (pending) show(pending);
   }
   void start().catch(() => undefined);
+  return { show };
 }

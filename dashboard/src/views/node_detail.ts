@@ -11,8 +11,16 @@ const CHANNEL = /^(.*)\.ch(\d+)$/;
 
 export class NodeDetail {
   private channel = new Map<string, string>();  // node → the MD2 channel machine shown
+  private lessonMachine = new Map<string, string>();  // node → the machine the lesson view shows
+  private lesson = false;
 
   constructor(private host: HTMLElement, private onRedraw: () => void) {}
+
+  /** The lesson view (a projector) shows one machine at a time, large, with a tab per machine. */
+  setLesson(on: boolean): void {
+    this.lesson = on;
+    this.onRedraw();
+  }
 
   render(node: NodeInfo | undefined, machines: NodeMachines | undefined, history: readonly Transition[], unavailable: string | null): void {
     if (!node) {
@@ -26,7 +34,9 @@ export class NodeDetail {
       parts.push(el('p', { class: 'none', 'data-testid': 'machines-unavailable' }, unavailable ?? 'loading the state machines…'));
     } else {
       const boxes = el('div', { class: 'machines' });
-      for (const m of this.shownMachines(node.name, machines.machines, boxes)) boxes.append(this.machineBox(m, history));
+      let shown = this.shownMachines(node.name, machines.machines, boxes);
+      if (this.lesson) shown = this.lessonTabs(node.name, shown, boxes);
+      for (const m of shown) boxes.append(this.machineBox(m, history));
       parts.push(boxes);
     }
     const emcy = node.emcy.slice().reverse();
@@ -52,6 +62,20 @@ export class NodeDetail {
     return all.filter((m) => !channels.includes(m) || m === chosen);
   }
 
+  /** One tab per machine; the chosen one (first the device's own, else NMT) is the one drawn. */
+  private lessonTabs(node: string, all: readonly Machine[], boxes: HTMLElement): Machine[] {
+    if (all.length === 0) return [];
+    const chosen = all.find((m) => m.machine === this.lessonMachine.get(node)) ?? all.find((m) => m.machine !== 'nmt') ?? all[0];
+    boxes.append(el('div', { class: 'machine-tabs', role: 'group', 'aria-label': 'State machine shown', 'data-testid': 'machine-tabs' },
+      ...all.map((m) => {
+        const b = el('button', { type: 'button', 'aria-pressed': String(m === chosen), 'data-testid': `machine-tab-${m.machine}` },
+          m.machine === 'nmt' ? 'NMT' : (m.title || m.machine).replace(/\s*\(.*\)$/, ''));
+        b.addEventListener('click', () => { this.lessonMachine.set(node, m.machine); this.onRedraw(); });
+        return b;
+      })));
+    return [chosen];
+  }
+
   private machineBox(m: Machine, history: readonly Transition[]): HTMLElement {
     const current = currentStates(m, history);
     const shown = [...current].join(' + ');
@@ -61,7 +85,7 @@ export class NodeDetail {
       : `no transition recorded; state ${shown}`;
     return el('figure', { class: `diagram-box machine-${m.machine.split('.')[0]}`, 'data-machine': m.machine },
       el('figcaption', { class: 'machine-title' }, el('strong', {}, m.title || m.machine), ` — ${shown}`),
-      renderMachine(m, current, chain),
+      renderMachine(m, current, chain, this.lesson),
       el('figcaption', { 'data-testid': `last-change-${m.machine}`, class: 'last-change' }, last),
       m.note ? el('p', { class: 'machine-note', 'data-testid': `note-${m.machine}` }, m.note) : null);
   }

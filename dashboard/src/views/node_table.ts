@@ -2,7 +2,7 @@
 // the device reports it, its process values in display units, error register and last EMCY;
 // clicking a row selects the node for the diagrams, the controls and the dictionary.
 import { el, hex } from '../dom';
-import type { NodeInfo, ScenarioNode, SignalInfo } from '../types';
+import type { Machine, NodeInfo, ScenarioNode, SignalInfo } from '../types';
 import { formatSignal } from '../units';
 
 /** A node's process values worth a column: its measuring or commanding ports, at most two. */
@@ -12,14 +12,34 @@ export function processSignals(node: string, signals: ReadonlyMap<string, Signal
   return PRIMARY_PORTS.map((p) => signals.get(`${node}.${p}`)).filter((s): s is SignalInfo => s !== undefined).slice(0, 2);
 }
 
-export function deviceSummary(n: NodeInfo): string {
+type Bits = readonly { bit: number; name: string }[];
+/** A CiA 406 node's named bits, per word, as its C++ profile serves them (GET .../machines). */
+export interface BitNames { status?: Bits; alarms?: Bits; warnings?: Bits }
+
+/** The bit names of the machines cia406.status / .alarms / .warnings. */
+export function bitNamesOf(machines: readonly Machine[]): BitNames {
+  const of = (id: string) => machines.find((m) => m.machine === id)?.bits;
+  return { status: of('cia406.status'), alarms: of('cia406.alarms'), warnings: of('cia406.warnings') };
+}
+
+/** The set bits of `word` by name ("none" when none); a set bit the product does not name in hex. */
+export function setBits(word: number, bits: Bits | undefined): string {
+  if (!bits) return `${hex(word, 4)}h`;
+  const names = bits.filter((b) => (word >> b.bit) & 1).map((b) => b.name);
+  const unnamed = word & ~bits.reduce((m, b) => m | (1 << b.bit), 0) & 0xffff;
+  if (unnamed) names.push(`${hex(unnamed, 4)}h`);
+  return names.length ? names.join(' + ') : 'none';
+}
+
+export function deviceSummary(n: NodeInfo, bits: BitNames = {}): string {
   if (n.nmt === 'OFF') return 'OFF';
   const d = n.device;
   switch (d.profile) {
     case 'dsp408':
       return d.channels && d.channels.length > 1 ? d.channels.map((c) => `ch${c.channel} ${c.state}`).join(', ') : d.state;
     case 'vtvpcd': return d.faults.length ? `${d.state}; faults: ${d.faults.join(', ')}` : d.state;
-    case 'cia406': return `status ${hex(d.operating_status, 4)}h, alarms ${hex(d.alarms, 4)}h, warnings ${hex(d.warnings, 4)}h`;
+    case 'cia406':
+      return `status: ${setBits(d.operating_status, bits.status)}\nalarms: ${setBits(d.alarms, bits.alarms)}\nwarnings: ${setBits(d.warnings, bits.warnings)}`;
     default: return '—';
   }
 }
@@ -30,6 +50,7 @@ interface RowCells { row: HTMLTableRowElement; nmt: HTMLElement; device: HTMLEle
 export class NodeTable {
   private rows = new Map<string, RowCells>();
   private readings = new Map<string, SignalInfo[]>();
+  private bits = new Map<string, BitNames>();
 
   constructor(host: HTMLElement, scenarioNodes: readonly ScenarioNode[], signals: ReadonlyMap<string, SignalInfo>, onSelect: (name: string) => void) {
     const body = el('tbody');
@@ -56,6 +77,11 @@ export class NodeTable {
       body)));
   }
 
+  /** A node's machines (for the CiA 406 words' bit names). */
+  setMachines(node: string, machines: readonly Machine[]): void {
+    this.bits.set(node, bitNamesOf(machines));
+  }
+
   /** The node signals whose newest values the table shows (added to the stream's signals). */
   signalNames(): string[] {
     return [...this.readings.values()].flat().map((s) => s.name);
@@ -77,7 +103,7 @@ export class NodeTable {
       const set = (e: HTMLElement, text: string) => { if (e.textContent !== text) e.textContent = text; };
       set(c.nmt, n?.nmt ?? '?');
       c.nmt.className = `nmt nmt-${(n?.nmt ?? 'unknown').toLowerCase()}`;
-      set(c.device, n ? deviceSummary(n) : '?');
+      set(c.device, n ? deviceSummary(n, this.bits.get(name)) : '?');
       set(c.errreg, n ? `0x${hex(n.error_register, 2)}` : "?");
       const lastEmcy = n?.emcy.length ? n.emcy[n.emcy.length - 1] : null;
       set(c.emcy, lastEmcy ? `${hex(lastEmcy.code, 4)}h ${lastEmcy.text}` : '');

@@ -4,6 +4,7 @@
 // device's transition log (none → BIT when it sets, BIT → none when it clears).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -31,12 +32,20 @@ class StatusRecorder {
   /// nothing changes) and records each named bit that changed. Allocates nothing.
   void check();
 
+  enum class Word : std::uint8_t { Status = 0, Alarms = 1, Warnings = 2 };
+  /// The product sets `bits` of `word` for a device fault and sends EMCY `emcy_code` (0: its
+  /// manual documents none): the next check() records those bits' setting with that cause
+  /// (device_fault, the code, the bit's name) instead of `internal`. Allocates nothing.
+  void raised_by_fault(Word word, std::uint16_t bits, std::uint16_t emcy_code);
+
  private:
   canopen::Node& node_;
   StatusBitNames names_;
   std::uint16_t last_[3] = {0, 0, 0};
   const canopen::OdEntry* entries_[3] = {nullptr, nullptr, nullptr};  ///< found at the first check
   bool bound_ = false;
+  std::uint16_t fault_bits_[3] = {0, 0, 0};                ///< bits noted by raised_by_fault
+  std::array<std::array<std::uint16_t, 16>, 3> fault_code_{};  ///< their EMCY codes, per bit
 };
 
 }  // namespace cia406

@@ -1,5 +1,6 @@
 // The HLT 1100's CiA 406 machines (devices/profiles/cia406/status_machines.h) in its transition
-// log: each named bit of 6503h recorded as it sets and clears, with the word as evidence.
+// log: each named bit of 6503h recorded as it sets (raised by a device fault: the fault with its
+// EMCY code) and clears (the word as evidence).
 #include "tests/devices/hlt1100/hlt1100_fixture.h"
 
 namespace hlt1100::test {
@@ -25,17 +26,33 @@ TEST_F(Hlt1100Test, MagnetLostSetsAndClearsTheNamedAlarmBit) {
   EXPECT_EQ(a[0].from, "none");
   EXPECT_EQ(a[0].to, "position error");
   EXPECT_EQ(a[0].transition, "set");
-  EXPECT_EQ(a[0].value, 0x0001u);  // 6503h as it became
-  EXPECT_EQ(a[0].detail, "Alarms 6503h (CiA 406)");
-  EXPECT_EQ(a[0].cause, devices::TransitionCause::Internal);  // the device's own condition
+  EXPECT_EQ(a[0].cause, devices::TransitionCause::DeviceFault);  // not `internal`
+  EXPECT_EQ(a[0].value, 0xFF00u);  // the EMCY the alarm sent (position_emcy_code)
+  EXPECT_EQ(a[0].detail, "position error");
   EXPECT_EQ(a[1].from, "position error");
   EXPECT_EQ(a[1].to, "none");
   EXPECT_EQ(a[1].transition, "cleared");
-  EXPECT_EQ(a[1].value, 0x0000u);
+  EXPECT_EQ(a[1].cause, devices::TransitionCause::Internal);
+  EXPECT_EQ(a[1].value, 0x0000u);  // 6503h as it became
+  EXPECT_EQ(a[1].detail, "Alarms 6503h (CiA 406)");
   EXPECT_GT(a[1].t_us, a[0].t_us);
   // Nothing else changed: no status or warning entries.
   EXPECT_TRUE(of(device().transition_log(), "cia406.status", seq).empty());
   EXPECT_TRUE(of(device().transition_log(), "cia406.warnings", seq).empty());
+}
+
+TEST_F(Hlt1100Test, AnAlarmFromAnSdoWriteNamesItsEmcyCode) {
+  start();
+  const auto seq = device().transition_log().last_seq();
+  // A preset beyond the range is confirmed, not applied: "parameter error" (EMCY 6300h).
+  EXPECT_EQ(h().write(0x6010, 1, 5000, 4), 0u);
+  h().run_ms(5);
+  const auto a = of(device().transition_log(), "cia406.alarms", seq);
+  ASSERT_EQ(a.size(), 1u);
+  EXPECT_EQ(a[0].to, "parameter error");
+  EXPECT_EQ(a[0].cause, devices::TransitionCause::DeviceFault);
+  EXPECT_EQ(a[0].value, 0x6300u);
+  EXPECT_EQ(a[0].detail, "parameter error");
 }
 
 }  // namespace

@@ -30,9 +30,9 @@ TEST_F(StatusMachines, PositionErrorIsANamedAlarmBit) {
   EXPECT_EQ(a[0].from, "none");
   EXPECT_EQ(a[0].to, "position error");
   EXPECT_EQ(a[0].transition, "set");
-  EXPECT_EQ(a[0].value, 0x0001u);
-  EXPECT_EQ(a[0].detail, "Alarms 6503h (CiA 406)");
-  EXPECT_EQ(a[0].cause, devices::TransitionCause::Internal);
+  EXPECT_EQ(a[0].cause, devices::TransitionCause::DeviceFault);
+  EXPECT_EQ(a[0].value, 0x0000u);  // the manual documents no EMCY code for it (position_error_emcy 0)
+  EXPECT_EQ(a[0].detail, "position error");
   EXPECT_EQ(a[1].to, "none");
   EXPECT_EQ(a[1].transition, "cleared");
   EXPECT_EQ(a[1].value, 0x0000u);
@@ -49,8 +49,9 @@ TEST_F(StatusMachines, OverTemperatureIsANamedWarningBit) {
   ASSERT_EQ(w.size(), 2u);
   EXPECT_EQ(w[0].from, "none");
   EXPECT_EQ(w[0].to, "over-temperature");
-  EXPECT_EQ(w[0].value, 0x1000u);  // 6505h bit 12
-  EXPECT_EQ(w[0].detail, "Warnings 6505h (CiA 406)");
+  EXPECT_EQ(w[0].cause, devices::TransitionCause::DeviceFault);
+  EXPECT_EQ(w[0].value, 0x4200u);  // the temperature EMCY it sent
+  EXPECT_EQ(w[0].detail, "over-temperature");
   EXPECT_EQ(w[1].from, "over-temperature");
   EXPECT_EQ(w[1].to, "none");
   EXPECT_TRUE(of("cia406.alarms", seq).empty());
