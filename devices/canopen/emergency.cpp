@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "devices/canopen/node.h"
 
 namespace canopen {
 
@@ -13,21 +12,19 @@ constexpr std::uint16_t kCobIdEmcy = 0x1014;
 constexpr std::uint16_t kInhibitEmcy = 0x1015;
 }  // namespace
 
-Emergency::Emergency(Node& node) : node_(node) {}
-
 bool Emergency::may_send() const {
-  const NmtState state = node_.nmt_state();
+  const NmtState state = status_.nmt_state;
   if (!emcy_allowed(state)) return false;
-  return state != NmtState::PreOperational || node_.policy().emcy.send_in_preoperational;
+  return state != NmtState::PreOperational || policy_.send_in_preoperational;
 }
 
 void Emergency::bind_objects() {
-  auto& od = node_.od();
-  const auto& policy = node_.policy().emcy;
+  auto& od = od_;
+  const auto& policy = policy_;
   if (od.entry(kErrorHistory, 0) && policy.history_depth > 0) {
     od.add_check(kErrorHistory, 0, [this](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
       if (origin == Origin::Restore || origin == Origin::Internal) return SdoAbort::None;
-      if (decode_unsigned(data) != 0) return node_.policy().emcy.history_write_nonzero;
+      if (decode_unsigned(data) != 0) return policy_.history_write_nonzero;
       return SdoAbort::None;
     });
     od.add_observer(kErrorHistory, 0, [this](OdEntry&, Origin origin) {
@@ -36,7 +33,7 @@ void Emergency::bind_objects() {
     for (auto& [sub, e] : od.object(kErrorHistory)->entries) {
       if (sub == 0) continue;
       od.add_read_hook(kErrorHistory, sub, [this, s = sub](OdEntry&, Origin) {
-        return s > history_.size() ? node_.policy().emcy.history_read_beyond : SdoAbort::None;
+        return s > history_.size() ? policy_.history_read_beyond : SdoAbort::None;
       });
     }
   }
@@ -54,7 +51,7 @@ void Emergency::set_extra_register_bits(std::uint8_t bits) {
 }
 
 void Emergency::update_register() {
-  if (node_.od().entry(kErrorRegister, 0)) node_.od().set<std::uint8_t>(kErrorRegister, 0, error_register());
+  if (od_.entry(kErrorRegister, 0)) od_.set<std::uint8_t>(kErrorRegister, 0, error_register());
 }
 
 void Emergency::raise(std::uint16_t code, std::uint8_t register_bits, Info info) {
@@ -79,30 +76,30 @@ void Emergency::clear(std::uint16_t code) {
   if (it == active_.end()) return;
   active_.erase(it);
   update_register();
-  if (node_.policy().emcy.history == EmcyPolicy::History::PresentErrors) {
+  if (policy_.history == EmcyPolicy::History::PresentErrors) {
     history_.erase(std::remove_if(history_.begin(), history_.end(),
                                   [code](std::uint32_t e) { return (e & 0xFFFF) == code; }),
                    history_.end());
     publish_history();
   }
-  if (active_.empty() && node_.policy().emcy.send_no_error) enqueue(0x0000, Info{});
+  if (active_.empty() && policy_.send_no_error) enqueue(0x0000, Info{});
 }
 
 void Emergency::clear_all() {
   if (active_.empty()) return;
   active_.clear();
   update_register();
-  if (node_.policy().emcy.history == EmcyPolicy::History::PresentErrors) {
+  if (policy_.history == EmcyPolicy::History::PresentErrors) {
     history_.clear();
     publish_history();
   }
-  if (node_.policy().emcy.send_no_error) enqueue(0x0000, Info{});
+  if (policy_.send_no_error) enqueue(0x0000, Info{});
 }
 
 void Emergency::record(std::uint16_t code, const Info& info) {
-  const auto& policy = node_.policy().emcy;
+  const auto& policy = policy_;
   if (policy.history_depth == 0 || code == 0) return;
-  if (!policy.record_when_not_sent && !emcy_allowed(node_.nmt_state())) return;
+  if (!policy.record_when_not_sent && !emcy_allowed(status_.nmt_state)) return;
   const std::uint32_t entry = (static_cast<std::uint32_t>(info[0]) | static_cast<std::uint32_t>(info[1]) << 8) << 16 | code;
   history_.insert(history_.begin(), entry);
   if (history_.size() > policy.history_depth) history_.resize(policy.history_depth);
@@ -115,8 +112,8 @@ void Emergency::clear_history() {
 }
 
 void Emergency::publish_history() {
-  if (node_.policy().emcy.history_depth == 0) return;  // the device keeps 0x1003 itself
-  auto& od = node_.od();
+  if (policy_.history_depth == 0) return;  // the device keeps 0x1003 itself
+  auto& od = od_;
   auto* obj = od.object(kErrorHistory);
   if (!obj) return;
   for (auto& [sub, e] : obj->entries) {
@@ -129,8 +126,8 @@ void Emergency::publish_history() {
 }
 
 void Emergency::send_frame(std::uint16_t code, std::uint8_t error_register, Info info) {
-  const auto* cob = node_.od().entry(kCobIdEmcy, 0);
-  const std::uint32_t cob_id = cob ? cob->as<std::uint32_t>() : 0x80u + node_.node_id();
+  const auto* cob = od_.entry(kCobIdEmcy, 0);
+  const std::uint32_t cob_id = cob ? cob->as<std::uint32_t>() : 0x80u + status_.node_id;
   if (cob_id & 0x80000000u) return;  // EMCY disabled
   if (!may_send()) return;
   sim::CanFrame f;
@@ -140,7 +137,7 @@ void Emergency::send_frame(std::uint16_t code, std::uint8_t error_register, Info
   f.data = {static_cast<std::uint8_t>(code), static_cast<std::uint8_t>(code >> 8), error_register,
             info[0], info[1], info[2], info[3], info[4]};
   queue_.push(f);
-  process(node_.now());
+  process(status_.now);
 }
 
 void Emergency::enqueue(std::uint16_t code, const Info& info) { send_frame(code, error_register(), info); }
@@ -151,9 +148,9 @@ void Emergency::process(sim::Time now) {
       queue_.clear();  // EMCYs are never sent late from Stopped
       return;
     }
-    node_.send(queue_.front());
+    sender_.send(queue_.front());
     queue_.pop();
-    const auto* inhibit = node_.od().entry(kInhibitEmcy, 0);
+    const auto* inhibit = od_.entry(kInhibitEmcy, 0);
     const auto units = inhibit ? inhibit->as<std::uint32_t>() : 0u;
     next_allowed_ = now + sim::microseconds(static_cast<std::int64_t>(units) * 100);
   }
@@ -162,8 +159,8 @@ void Emergency::process(sim::Time now) {
 void Emergency::reset_communication() {
   queue_.clear();
   next_allowed_ = sim::Time{};
-  if (node_.policy().emcy.clear_history_on_reset_communication &&
-      node_.policy().emcy.history == EmcyPolicy::History::Events) {
+  if (policy_.clear_history_on_reset_communication &&
+      policy_.history == EmcyPolicy::History::Events) {
     history_.clear();
   }
   publish_history();

@@ -9,19 +9,22 @@
 #include <cstdint>
 #include <vector>
 
+#include "devices/canopen/node_policy.h"
+#include "devices/canopen/object_dictionary.h"
+#include "devices/canopen/service_links.h"
 #include "sim/can_frame.h"
 #include "sim/ring_buffer.h"
 #include "sim/time.h"
 
 namespace canopen {
 
-class Node;
-
 class Emergency {
  public:
   using Info = std::array<std::uint8_t, 5>;  ///< manufacturer-specific bytes 3..7
 
-  explicit Emergency(Node& node);
+  /// `status`: NMT state (EMCY is not sent in Stopped), node-ID (default COB-ID) and time.
+  Emergency(ObjectDictionary& od, const EmcyPolicy& policy, const NodeStatus& status, FrameSender& sender)
+      : od_(od), policy_(policy), status_(status), sender_(sender) {}
 
   /// Installs behaviour on 0x1001/0x1003 (if present). Called once when the node is built.
   void bind_objects();
@@ -67,7 +70,10 @@ class Emergency {
   void update_register();
   void publish_history();
 
-  Node& node_;
+  ObjectDictionary& od_;
+  const EmcyPolicy& policy_;
+  const NodeStatus& status_;
+  FrameSender& sender_;
   std::vector<ActiveError> active_;
   std::uint8_t extra_bits_ = 0;
   std::vector<std::uint32_t> history_;  // newest first

@@ -1,7 +1,5 @@
 #include "devices/canopen/error_control.h"
 
-#include "devices/canopen/node.h"
-
 namespace canopen {
 
 namespace {
@@ -10,17 +8,15 @@ constexpr std::uint16_t kLifeTimeFactor = 0x100D;
 constexpr std::uint16_t kProducerHeartbeat = 0x1017;
 }  // namespace
 
-ErrorControl::ErrorControl(Node& node) : node_(node) {}
-
 void ErrorControl::bind_objects() {
-  auto& od = node_.od();
+  auto& od = od_;
   heartbeat_time_ = od.entry(kProducerHeartbeat, 0);
   guard_time_ = od.entry(kGuardTime, 0);
   life_time_factor_ = od.entry(kLifeTimeFactor, 0);
   if (od.entry(kProducerHeartbeat, 0)) {
     // A new period takes effect at once: first heartbeat one period after the write; 0 stops.
     od.add_observer(kProducerHeartbeat, 0, [this](OdEntry&, Origin) {
-      next_heartbeat_ = node_.now() + sim::milliseconds(heartbeat_period_ms());
+      next_heartbeat_ = status_.now + sim::milliseconds(heartbeat_period_ms());
     });
   }
   for (std::uint16_t idx : {kGuardTime, kLifeTimeFactor}) {
@@ -46,25 +42,25 @@ void ErrorControl::reset_communication(sim::Time now) {
 
 void ErrorControl::on_frame(const sim::CanFrame& frame, sim::Time now) {
   if (!frame.rtr) return;  // only remote frames are guard requests
-  if (heartbeat_period_ms() != 0 && !node_.policy().error_control.guard_while_heartbeat) return;
-  const auto state = static_cast<std::uint8_t>(node_.nmt_state());
-  node_.send(sim::CanFrame::data_frame(0x700u + node_.node_id(),
+  if (heartbeat_period_ms() != 0 && !policy_.guard_while_heartbeat) return;
+  const auto state = static_cast<std::uint8_t>(status_.nmt_state);
+  sender_.send(sim::CanFrame::data_frame(0x700u + status_.node_id,
                                        {static_cast<std::uint8_t>((toggle_ ? 0x80 : 0x00) | state)}));
   toggle_ = !toggle_;
   last_guard_ = now;
   if (life_time_ms() != 0) armed_ = true;
   if (in_error_) {
     in_error_ = false;
-    node_.communication_recovered(CommError::LifeGuarding);
+    events_.communication_recovered(CommError::LifeGuarding);
   }
 }
 
 void ErrorControl::process(sim::Time now) {
   const std::uint16_t period = heartbeat_period_ms();
   if (period != 0) {
-    if (!node_.policy().error_control.guard_while_heartbeat) armed_ = false;  // heartbeat replaces guarding
+    if (!policy_.guard_while_heartbeat) armed_ = false;  // heartbeat replaces guarding
     if (now >= next_heartbeat_) {
-      node_.send(sim::CanFrame::data_frame(0x700u + node_.node_id(), {static_cast<std::uint8_t>(node_.nmt_state())}));
+      sender_.send(sim::CanFrame::data_frame(0x700u + status_.node_id, {static_cast<std::uint8_t>(status_.nmt_state)}));
       next_heartbeat_ += sim::milliseconds(period);
       if (next_heartbeat_ <= now) next_heartbeat_ = now + sim::milliseconds(period);
     }
@@ -73,7 +69,7 @@ void ErrorControl::process(sim::Time now) {
   const std::uint32_t life = life_time_ms();
   if (life != 0 && now - last_guard_ > sim::milliseconds(life)) {
     in_error_ = true;
-    node_.communication_error(CommError::LifeGuarding, life);
+    events_.communication_error(CommError::LifeGuarding, life);
   }
 }
 

@@ -4,18 +4,21 @@
 
 #include <cstdint>
 
+#include "devices/canopen/node_policy.h"
 #include "devices/canopen/object_dictionary.h"
-
+#include "devices/canopen/service_links.h"
 #include "sim/can_frame.h"
 #include "sim/time.h"
 
 namespace canopen {
 
-class Node;
-
 class ErrorControl {
  public:
-  explicit ErrorControl(Node& node);
+  /// `status`: node-ID and NMT state (the heartbeat's byte) and time; `events`: life guarding
+  /// timed out / resumed.
+  ErrorControl(ObjectDictionary& od, const ErrorControlPolicy& policy, const NodeStatus& status, FrameSender& sender,
+               CommErrorEvents& events)
+      : od_(od), policy_(policy), status_(status), sender_(sender), events_(events) {}
   void bind_objects();
 
   void on_frame(const sim::CanFrame& frame, sim::Time now);  ///< frames on 0x700+N
@@ -34,7 +37,11 @@ class ErrorControl {
  private:
   std::uint32_t life_time_ms() const;
 
-  Node& node_;
+  ObjectDictionary& od_;
+  const ErrorControlPolicy& policy_;
+  const NodeStatus& status_;
+  FrameSender& sender_;
+  CommErrorEvents& events_;
   // 0x1017, 0x100C, 0x100D (null when absent): read every tick, bound by bind_objects().
   const OdEntry* heartbeat_time_ = nullptr;
   const OdEntry* guard_time_ = nullptr;

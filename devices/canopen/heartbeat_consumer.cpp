@@ -2,44 +2,40 @@
 
 #include <algorithm>
 
-#include "devices/canopen/node.h"
-
 namespace canopen {
 
 namespace {
 constexpr std::uint16_t kConsumerHeartbeat = 0x1016;
 }
 
-HeartbeatConsumer::HeartbeatConsumer(Node& node) : node_(node) {}
-
 void HeartbeatConsumer::bind_objects() {
-  auto* obj = node_.od().object(kConsumerHeartbeat);
+  auto* obj = od_.object(kConsumerHeartbeat);
   if (!obj) return;
   for (auto& [sub, e] : obj->entries) {
     if (sub == 0) continue;
-    node_.od().add_check(kConsumerHeartbeat, sub, [this, s = sub](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
-      const SdoAbort refuse = node_.policy().error_control.duplicate_consumer;
+    od_.add_check(kConsumerHeartbeat, sub, [this, s = sub](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
+      const SdoAbort refuse = policy_.duplicate_consumer;
       if (origin != Origin::Sdo || refuse == SdoAbort::None) return SdoAbort::None;
       const auto v = static_cast<std::uint32_t>(decode_unsigned(data));
       const auto producer = (v >> 16) & 0xFF;
       if (producer == 0 || producer > 127 || (v & 0xFFFF) == 0) return SdoAbort::None;  // entry unused
-      for (const auto& [other, entry] : node_.od().object(kConsumerHeartbeat)->entries) {
+      for (const auto& [other, entry] : od_.object(kConsumerHeartbeat)->entries) {
         if (other == 0 || other == s) continue;
         const auto w = entry.as<std::uint32_t>();
         if (((w >> 16) & 0xFF) == producer && (w & 0xFFFF) != 0) return refuse;
       }
       return SdoAbort::None;
     });
-    node_.od().add_observer(kConsumerHeartbeat, sub, [this](OdEntry&, Origin) {
+    od_.add_observer(kConsumerHeartbeat, sub, [this](OdEntry&, Origin) {
       reload();
-      node_.rebuild_dispatch();
+      routes_.rebuild_dispatch();
     });
   }
 }
 
 void HeartbeatConsumer::reload() {
   watches_.clear();
-  const auto* obj = node_.od().object(kConsumerHeartbeat);
+  const auto* obj = od_.object(kConsumerHeartbeat);
   if (!obj) return;
   for (const auto& [sub, e] : obj->entries) {
     if (sub == 0) continue;
@@ -66,7 +62,7 @@ void HeartbeatConsumer::on_frame(const sim::CanFrame& frame, sim::Time now) {
     w.last_seen = now;
     if (w.timed_out) {
       w.timed_out = false;
-      node_.communication_recovered(CommError::HeartbeatConsumer);
+      events_.communication_recovered(CommError::HeartbeatConsumer);
     }
   }
 }
@@ -76,7 +72,7 @@ void HeartbeatConsumer::process(sim::Time now) {
     if (!w.monitoring || w.timed_out) continue;
     if (now - w.last_seen > sim::milliseconds(w.time_ms)) {
       w.timed_out = true;
-      node_.communication_error(CommError::HeartbeatConsumer, w.producer);
+      events_.communication_error(CommError::HeartbeatConsumer, w.producer);
     }
   }
 }

@@ -5,16 +5,20 @@
 #include <cstdint>
 #include <vector>
 
+#include "devices/canopen/node_policy.h"
+#include "devices/canopen/object_dictionary.h"
+#include "devices/canopen/service_links.h"
 #include "sim/can_frame.h"
 #include "sim/time.h"
 
 namespace canopen {
 
-class Node;
-
 class HeartbeatConsumer {
  public:
-  explicit HeartbeatConsumer(Node& node);
+  /// `events`: a producer's heartbeat timed out / came back; `routes`: 0x1016 changed.
+  HeartbeatConsumer(ObjectDictionary& od, const ErrorControlPolicy& policy, CommErrorEvents& events,
+                    RoutesChanged& routes)
+      : od_(od), policy_(policy), events_(events), routes_(routes) {}
   void bind_objects();
   /// Re-reads 0x1016 (after a reset or a write).
   void reload();
@@ -35,7 +39,10 @@ class HeartbeatConsumer {
     bool timed_out = false;
     sim::Time last_seen{};
   };
-  Node& node_;
+  ObjectDictionary& od_;
+  const ErrorControlPolicy& policy_;
+  CommErrorEvents& events_;
+  RoutesChanged& routes_;
   std::vector<Watch> watches_;
 };
 

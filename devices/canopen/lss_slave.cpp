@@ -1,7 +1,5 @@
 #include "devices/canopen/lss_slave.h"
 
-#include "devices/canopen/node.h"
-#include "devices/canopen/store_restore.h"
 
 namespace canopen {
 
@@ -17,12 +15,10 @@ unsigned lss_bit_rate_kbit(std::uint8_t table_index) {
   return table_index < 9 ? kTable[table_index] : 0;
 }
 
-LssSlave::LssSlave(Node& node, const LssPolicy& policy) : node_(node), policy_(policy) {}
-
-bool LssSlave::unconfigured() const { return node_.node_id() == Node::kUnconfigured; }
+bool LssSlave::unconfigured() const { return status_.node_id == kUnconfiguredNodeId; }
 
 std::uint32_t LssSlave::identity(int sub) const {
-  const auto* e = node_.od().entry(0x1018, static_cast<std::uint8_t>(sub));
+  const auto* e = od_.entry(0x1018, static_cast<std::uint8_t>(sub));
   return e ? e->as<std::uint32_t>() : 0;
 }
 
@@ -32,15 +28,15 @@ void LssSlave::power_on() {
   switching_ = false;
   held_answer_.reset();
   stored_since_configure_ = false;
-  const auto& nv = node_.store().memory();
-  if (const auto* id = nv.find(kNvIndex, 1); id && id->bytes.size() == 1) node_.set_pending_node_id(id->bytes[0]);
+  const auto& nv = memory_;
+  if (const auto* id = nv.find(kNvIndex, 1); id && id->bytes.size() == 1) events_.set_pending_node_id(id->bytes[0]);
   if (const auto* br = nv.find(kNvIndex, 2); br && br->bytes.size() == 1) {
     active_bit_rate_ = br->bytes[0];
   } else {
     active_bit_rate_ = default_bit_rate_;
   }
   pending_bit_rate_ = active_bit_rate_;
-  pending_node_id_ = node_.pending_node_id();
+  pending_node_id_ = status_.pending_node_id;
 }
 
 sim::CanFrame LssSlave::answer(std::initializer_list<std::uint8_t> bytes) {
@@ -52,12 +48,12 @@ sim::CanFrame LssSlave::answer(std::initializer_list<std::uint8_t> bytes) {
   return f;
 }
 
-void LssSlave::reply(std::initializer_list<std::uint8_t> bytes) { node_.send(answer(bytes)); }
+void LssSlave::reply(std::initializer_list<std::uint8_t> bytes) { sender_.send(answer(bytes)); }
 
 void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
   if (frame.rtr || switching_) return;
   if (frame.dlc < 8 && (!policy_.pad_short_frames || frame.dlc == 0)) return;
-  if (!policy_.in_operational && node_.nmt_state() == NmtState::Operational) return;
+  if (!policy_.in_operational && status_.nmt_state == NmtState::Operational) return;
   std::uint8_t d[8] = {};
   for (int i = 0; i < frame.dlc && i < 8; ++i) d[i] = frame.data[i];
   const std::uint8_t cs = d[0];
@@ -80,7 +76,7 @@ void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
         switching_ = true;
         switch_at_ = now + delay;
         resume_at_ = now + delay + delay;
-        node_.go_silent_until(resume_at_);
+        silence_.go_silent_until(resume_at_);
       }
       break;
     case 0x17:  // store configuration
@@ -89,7 +85,7 @@ void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
         reply({0x17, policy_.store_error_code, policy_.store_error_specific});
       } else if (policy_.store_answer_delay.count() > 0) {
         held_answer_ = answer({0x17, 0x00, 0x00});
-        node_.go_silent_until(now + policy_.store_answer_delay);
+        silence_.go_silent_until(now + policy_.store_answer_delay);
       } else {
         reply({0x17, 0x00, 0x00});
       }
@@ -102,7 +98,7 @@ void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
       }
       break;
     case 0x5E:
-      if (config || policy_.inquire_in_waiting) reply({0x5E, node_.node_id()});
+      if (config || policy_.inquire_in_waiting) reply({0x5E, status_.node_id});
       break;
     case 0x46: case 0x47: case 0x48: case 0x49: case 0x4A: case 0x4B: identify_remote(cs, u32(d + 1)); break;
     case 0x4C:
@@ -116,10 +112,10 @@ void LssSlave::on_frame(const sim::CanFrame& frame, sim::Time now) {
 }
 
 std::uint8_t LssSlave::configure_node_id(std::uint8_t id) {
-  const bool valid = (id >= 1 && id <= 127) || (id == Node::kUnconfigured && policy_.accept_unconfigured_node_id);
+  const bool valid = (id >= 1 && id <= 127) || (id == kUnconfiguredNodeId && policy_.accept_unconfigured_node_id);
   if (!valid) return 0x01;
   pending_node_id_ = id;
-  node_.set_pending_node_id(id);
+  events_.set_pending_node_id(id);
   stored_since_configure_ = false;
   return 0x00;
 }
@@ -131,8 +127,8 @@ std::uint8_t LssSlave::configure_bit_rate(std::uint8_t table_index) {
 }
 
 bool LssSlave::store_configuration() {
-  if (node_.store().failing()) return false;
-  auto& nv = node_.store().memory();
+  if (memory_.failing()) return false;
+  auto& nv = memory_;
   nv.put(kNvIndex, 1, ParameterStore::Value{false, {pending_node_id_}});
   nv.put(kNvIndex, 2, ParameterStore::Value{false, {pending_bit_rate_}});
   std::string error;
@@ -154,7 +150,7 @@ void LssSlave::switch_global(std::uint8_t mode) {
   // LSS-only operation and boots with it.
   if (was_config && unconfigured() && pending_node_id_ >= 1 && pending_node_id_ <= 127 &&
       (stored_since_configure_ || !policy_.transition4_requires_store)) {
-    node_.reset_communication();
+    events_.apply_pending_node_id();
   }
 }
 
@@ -224,8 +220,8 @@ void LssSlave::fastscan(const std::uint8_t* d) {
 }
 
 void LssSlave::process(sim::Time now) {
-  if (held_answer_ && !node_.silent()) {
-    node_.send(*held_answer_);
+  if (held_answer_ && !status_.silent()) {
+    sender_.send(*held_answer_);
     held_answer_.reset();
   }
   if (!switching_) return;

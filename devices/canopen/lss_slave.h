@@ -7,12 +7,13 @@
 #include <cstdint>
 #include <optional>
 
+#include "devices/canopen/object_dictionary.h"
+#include "devices/canopen/parameter_store.h"
+#include "devices/canopen/service_links.h"
 #include "sim/can_frame.h"
 #include "sim/time.h"
 
 namespace canopen {
-
-class Node;
 
 struct LssPolicy {
   /// Inquire services (0x5A-0x5E) answered in LSS waiting too (CiA 305: configuration only).
@@ -62,7 +63,12 @@ class LssSlave {
 
   enum class State : std::uint8_t { Waiting, Configuration };
 
-  LssSlave(Node& node, const LssPolicy& policy);
+  /// `od`: identity (0x1018); `status`: node-ID, pending node-ID, NMT state, silence; `memory`:
+  /// the node's non-volatile memory (node-ID and bit rate at kNvIndex); `events`: node-ID
+  /// configured / to apply; `silence`: "store configuration" and "activate bit timing" pauses.
+  LssSlave(const LssPolicy& policy, const ObjectDictionary& od, const NodeStatus& status, ParameterStore& memory,
+           FrameSender& sender, LssEvents& events, SilenceRequest& silence)
+      : od_(od), status_(status), memory_(memory), sender_(sender), events_(events), silence_(silence), policy_(policy) {}
 
   /// Power-on: stored node-ID/bit rate become the pending (and so the active) values.
   void power_on();
@@ -101,7 +107,12 @@ class LssSlave {
   std::uint32_t identity(int sub) const;
   bool unconfigured() const;
 
-  Node& node_;
+  const ObjectDictionary& od_;
+  const NodeStatus& status_;
+  ParameterStore& memory_;
+  FrameSender& sender_;
+  LssEvents& events_;
+  SilenceRequest& silence_;
   LssPolicy policy_;
   State state_ = State::Waiting;
   std::uint8_t pending_node_id_ = 0xFF;

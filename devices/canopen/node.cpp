@@ -32,20 +32,31 @@ std::string_view command_transition(NmtCommand c) {
 }
 }  // namespace
 
+// The composition root: each service gets only what it needs (the dictionary, its policy, the
+// node's status, a frame sender) and reports its events through the interfaces this node
+// implements (service_links.h), which pass them on to another service or the application.
 Node::Node(std::string name, ObjectDictionary od, NodePolicy policy, std::uint8_t node_id)
     : name_(std::move(name)),
       od_(std::move(od)),
       policy_(std::move(policy)),
-      node_id_(node_id),
-      pending_node_id_(node_id),
-      emcy_(std::make_unique<Emergency>(*this)),
-      sdo_(std::make_unique<SdoServer>(*this)),
-      nmt_(std::make_unique<NmtSlave>(*this)),
-      error_control_(std::make_unique<ErrorControl>(*this)),
-      heartbeat_consumer_(std::make_unique<HeartbeatConsumer>(*this)),
-      sync_(std::make_unique<SyncConsumer>(*this)),
-      pdo_(std::make_unique<PdoService>(*this)),
-      store_(std::make_unique<StoreRestore>(*this)) {
+      status_{.node_id = node_id, .pending_node_id = node_id} {
+  // The events each service raises, as the narrow interfaces it is given.
+  FrameSender& sender = *this;
+  RoutesChanged& routes = *this;
+  EmcyRequests& emcy = *this;
+  NmtCommandHandler& nmt_commands = *this;
+  SyncEvents& sync_events = *this;
+  PdoEvents& pdo_events = *this;
+  CommErrorEvents& comm_errors = *this;
+  SilenceRequest& silence = *this;
+  emcy_ = std::make_unique<Emergency>(od_, policy_.emcy, status_, sender);
+  sdo_ = std::make_unique<SdoServer>(od_, policy_.sdo, status_, sender);
+  nmt_ = std::make_unique<NmtSlave>(policy_.nmt, status_, nmt_commands);
+  error_control_ = std::make_unique<ErrorControl>(od_, policy_.error_control, status_, sender, comm_errors);
+  heartbeat_consumer_ = std::make_unique<HeartbeatConsumer>(od_, policy_.error_control, comm_errors, routes);
+  sync_ = std::make_unique<SyncConsumer>(od_, policy_.pdo, status_, sync_events, emcy, routes);
+  pdo_ = std::make_unique<PdoService>(od_, policy_.pdo, status_, sender, pdo_events, emcy, routes);
+  store_ = std::make_unique<StoreRestore>(od_, policy_.store, status_, name_, silence);
   emcy_->bind_objects();
   error_control_->bind_objects();
   heartbeat_consumer_->bind_objects();
@@ -56,7 +67,12 @@ Node::Node(std::string name, ObjectDictionary od, NodePolicy policy, std::uint8_
 
 Node::~Node() = default;
 
-void Node::enable_lss(const LssPolicy& policy) { lss_ = std::make_unique<LssSlave>(*this, policy); }
+void Node::enable_lss(const LssPolicy& policy) {
+  FrameSender& sender = *this;
+  LssEvents& events = *this;
+  SilenceRequest& silence = *this;
+  lss_ = std::make_unique<LssSlave>(policy, od_, status_, store_->memory(), sender, events, silence);
+}
 
 void Node::attach(sim::Bus& bus) {
   bus_ = &bus;
@@ -78,16 +94,16 @@ bool Node::own_rate_matches_bus() const {
 void Node::send(const sim::CanFrame& frame) {
   if (!powered_ || silent() || bus_off_ || detecting_bit_rate_ || !bus_ || !on_bus_rate()) return;
   ++stats_.tx_frames;
-  bus_->send(endpoint_, frame, now_);
+  bus_->send(endpoint_, frame, status_.now);
 }
 
 // ---- life cycle ---------------------------------------------------------------------------------
 
 void Node::power_on(sim::Time now) {
-  now_ = now;
+  status_.now = now;
   powered_ = true;
-  silent_until_ = now;
-  nmt_state_ = NmtState::Initialising;
+  status_.silent_until = now;
+  status_.nmt_state = NmtState::Initialising;
   // The first power-on is the boot; any later one a power cycle (scenario, page button).
   boot_cause_ = ever_powered_ ? NmtCause{TransitionCause::Power, 1, "", "power on"}
                               : NmtCause{TransitionCause::Boot, 0, "", "power on"};
@@ -116,12 +132,12 @@ void Node::power_off() {
   powered_ = false;
   if (was_powered) {
     const CauseScope scope(*this, {TransitionCause::Power, 0, "", "power off"});
-    record_nmt(to_string(nmt_state_), "OFF");
+    record_nmt(to_string(status_.nmt_state), "OFF");
     app().on_power_off();
   }
   boot_pending_ = false;
   refresh_rx_gate();
-  nmt_state_ = NmtState::Initialising;
+  status_.nmt_state = NmtState::Initialising;
   sdo_->reset();
 }
 
@@ -131,9 +147,9 @@ void Node::reset_application() {
 }
 
 void Node::reset_communication() {
-  nmt_state_ = NmtState::Initialising;
+  status_.nmt_state = NmtState::Initialising;
   app().on_reset_communication();
-  node_id_ = pending_node_id_;
+  status_.node_id = status_.pending_node_id;
   store_->load_area(0x1000, 0x1FFF);
   sdo_->reset();
   emcy_->reset_communication();
@@ -143,26 +159,27 @@ void Node::reset_communication() {
   rebuild_dispatch();
   boot_pending_ = true;
   refresh_rx_gate();
-  boot_due_ = now_ + policy_.nmt.reset_delay;
+  boot_due_ = status_.now + policy_.nmt.reset_delay;
 }
 
 void Node::send_boot_up() {
   boot_pending_ = false;
   refresh_rx_gate();
-  if (node_id_ == kUnconfigured || node_id_ == 0 || node_id_ > 127) return;  // LSS only until configured
-  const NmtState from = nmt_state_;
-  nmt_state_ = NmtState::PreOperational;  // boot-up is sent on the transition (EMCY allowed after)
+  // LSS only until configured.
+  if (status_.node_id == kUnconfigured || status_.node_id == 0 || status_.node_id > 127) return;
+  const NmtState from = status_.nmt_state;
+  status_.nmt_state = NmtState::PreOperational;  // boot-up is sent on the transition (EMCY allowed after)
   NmtCause boot = boot_cause_;
   boot.transition = "boot-up";
   const CauseScope scope(*this, boot);
-  record_nmt(to_string(from), to_string(nmt_state_));
-  send(sim::CanFrame::data_frame(0x700u + node_id_, {0x00}));
-  error_control_->reset_communication(now_);
-  app().on_nmt_state_changed(from, nmt_state_);
+  record_nmt(to_string(from), to_string(status_.nmt_state));
+  send(sim::CanFrame::data_frame(0x700u + status_.node_id, {0x00}));
+  error_control_->reset_communication(status_.now);
+  app().on_nmt_state_changed(from, status_.nmt_state);
 }
 
 void Node::execute_nmt(NmtCommand command, std::string_view sender) {
-  if (!powered_ || nmt_state_ == NmtState::Initialising) return;
+  if (!powered_ || status_.nmt_state == NmtState::Initialising) return;
   const CauseScope scope(*this, {TransitionCause::NmtCommand, static_cast<std::uint32_t>(command), sender,
                                  command_transition(command)});
   app().on_nmt_command(command);
@@ -172,8 +189,8 @@ void Node::execute_nmt(NmtCommand command, std::string_view sender) {
     case NmtCommand::EnterPreOperational: set_nmt_state(NmtState::PreOperational); break;
     case NmtCommand::ResetNode:
     case NmtCommand::ResetCommunication:
-      record_nmt(to_string(nmt_state_), "INITIALISING");
-      nmt_state_ = NmtState::Initialising;
+      record_nmt(to_string(status_.nmt_state), "INITIALISING");
+      status_.nmt_state = NmtState::Initialising;
       boot_cause_ = cause_;  // the boot-up that follows names the reset
       if (command == NmtCommand::ResetNode) reset_application();
       reset_communication();
@@ -182,18 +199,18 @@ void Node::execute_nmt(NmtCommand command, std::string_view sender) {
 }
 
 void Node::set_nmt_state(NmtState state) {
-  if (state == nmt_state_) return;
-  const NmtState from = nmt_state_;
-  nmt_state_ = state;
+  if (state == status_.nmt_state) return;
+  const NmtState from = status_.nmt_state;
+  status_.nmt_state = state;
   record_nmt(to_string(from), to_string(state));
-  if (state == NmtState::Operational) pdo_->on_enter_operational(now_);
+  if (state == NmtState::Operational) pdo_->on_enter_operational(status_.now);
   app().on_nmt_state_changed(from, state);
 }
 
 void Node::record_nmt(std::string_view from, std::string_view to) {
   if (!transitions_ || from == to) return;
-  transitions_->record({0, static_cast<std::uint64_t>(now_.time_since_epoch().count()), "nmt", from, to, cause_.transition,
-                        cause_.cause, cause_.value, cause_.detail});
+  transitions_->record({0, static_cast<std::uint64_t>(status_.now.time_since_epoch().count()), "nmt", from, to,
+                        cause_.transition, cause_.cause, cause_.value, cause_.detail});
 }
 
 void Node::communication_error(CommError error, std::uint32_t evidence) {
@@ -214,12 +231,21 @@ void Node::communication_error(CommError error, std::uint32_t evidence) {
   if (const auto* behaviour = od_.entry(kErrorBehaviour, 1)) {
     switch (behaviour->as<std::uint8_t>()) {
       case 0:
-        if (nmt_state_ == NmtState::Operational) set_nmt_state(NmtState::PreOperational);
+        if (status_.nmt_state == NmtState::Operational) set_nmt_state(NmtState::PreOperational);
         break;
       case 2: set_nmt_state(NmtState::Stopped); break;
       default: break;  // 1: no state change
     }
   }
+}
+
+void Node::raise_emcy(std::uint16_t code) { emcy_->raise(code, policy_.error_control.communication_error_register); }
+
+void Node::clear_emcy(std::uint16_t code) { emcy_->clear(code); }
+
+void Node::sync_received(std::uint8_t pdo_counter, std::uint8_t counter, sim::Time now) {
+  pdo_->on_sync(pdo_counter, now);
+  app().on_sync(counter);
 }
 
 void Node::communication_recovered(CommError error) {
@@ -253,7 +279,7 @@ void Node::rebuild_dispatch() {
   add_route(sync_->cob_id() | (sync_->extended() ? 0x80000000u : 0), Route::Sync);
   const std::uint32_t sdo_rx = sdo_->rx_cob_id();
   if (!(sdo_rx & 0x80000000u)) add_route(sdo_rx & ((sdo_rx & 0x20000000u) ? 0x9FFFFFFFu : 0x7FFu), Route::SdoRx);
-  if (node_id_ >= 1 && node_id_ <= 127) add_route(0x700u + node_id_, Route::ErrorControl);
+  if (status_.node_id >= 1 && status_.node_id <= 127) add_route(0x700u + status_.node_id, Route::ErrorControl);
   if (lss_) add_route(kLssMasterToSlave, Route::Lss);
   add_route(0x000, Route::Nmt);
 }
@@ -273,14 +299,14 @@ void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
     dispatch(route, frame, now);
   };
   if (rx_plain_) {  // the usual state: what is left of the checks below
-    now_ = now;
+    status_.now = now;
     if (silent() || !on_bus_rate()) return;
     ++stats_.rx_frames;
     route_frame(frame.extended ? extended_route(frame.id) : routes_[frame.id & 0x7FF]);
     return;
   }
   if (!powered_) return;
-  now_ = now;
+  status_.now = now;
   if (silent() || bus_off_ || !on_bus_rate()) return;
   if (detecting_bit_rate_) {
     detect_bit_rate(now);
@@ -289,8 +315,8 @@ void Node::on_frame(const sim::CanFrame& frame, sim::Time now) {
   ++stats_.rx_frames;
   const RouteEntry route = frame.extended ? extended_route(frame.id) : routes_[frame.id & 0x7FF];
   if (route.route != Route::Lss) {
-    if (node_id_ < 1 || node_id_ > 127) return;  // unconfigured: LSS only
-    if (boot_pending_) return;                    // still initialising
+    if (status_.node_id < 1 || status_.node_id > 127) return;  // unconfigured: LSS only
+    if (boot_pending_) return;                                  // still initialising
   }
   route_frame(route);
 }
@@ -318,10 +344,10 @@ void Node::dispatch(RouteEntry route, const sim::CanFrame& frame, sim::Time now)
     case Route::Rpdo: pdo_->on_rpdo(route.index, frame, now); break;
     case Route::TpdoRtr: pdo_->on_tpdo_rtr(route.index, frame, now); break;
     case Route::SdoRx:
-      if (sdo_allowed(nmt_state_)) sdo_->on_request(frame, now);
+      if (sdo_allowed(status_.nmt_state)) sdo_->on_request(frame, now);
       break;
     case Route::ErrorControl:
-      if (error_control_allowed(nmt_state_)) error_control_->on_frame(frame, now);
+      if (error_control_allowed(status_.nmt_state)) error_control_->on_frame(frame, now);
       break;
     case Route::HeartbeatConsumer: heartbeat_consumer_->on_frame(frame, now); break;
     case Route::Lss: lss_->on_frame(frame, now); break;
@@ -333,7 +359,7 @@ void Node::on_error_state(sim::ErrorState state, sim::Time now) {
   const sim::ErrorState previous = controller_state_;
   controller_state_ = state;
   if (!powered_) return;
-  if (now > now_) now_ = now;
+  if (now > status_.now) status_.now = now;
   if (state == sim::ErrorState::BusOff) {
     bus_off_ = true;
     refresh_rx_gate();
@@ -354,13 +380,13 @@ void Node::on_error_state(sim::ErrorState state, sim::Time now) {
 
 void Node::step(sim::Time now, sim::Duration dt) {
   if (!powered_) return;
-  now_ = now;
+  status_.now = now;
   // Services with nothing to do are skipped by an inline check (most ticks: all but the
   // heartbeat timer, the application and the PDOs).
   if (lss_ && !lss_->idle()) lss_->process(now);  // runs while silent: it ends an "activate bit timing" pause
   if (silent() || detecting_bit_rate_) return;
   if (boot_pending_ && now >= boot_due_) send_boot_up();
-  if (boot_pending_ || nmt_state_ == NmtState::Initialising) return;
+  if (boot_pending_ || status_.nmt_state == NmtState::Initialising) return;
   if (!sdo_->idle()) sdo_->process(now);
   if (!error_control_->idle(now)) error_control_->process(now);
   if (!heartbeat_consumer_->idle()) heartbeat_consumer_->process(now);

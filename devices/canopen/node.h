@@ -13,6 +13,7 @@
 #include "devices/canopen/nmt_state.h"
 #include "devices/canopen/node_policy.h"
 #include "devices/canopen/object_dictionary.h"
+#include "devices/canopen/service_links.h"
 #include "devices/transition_log.h"
 #include "sim/bus.h"
 #include "sim/scheduler.h"
@@ -30,9 +31,21 @@ class StoreRestore;
 class LssSlave;
 struct LssPolicy;
 
-class Node final : public sim::FrameReceiver, public sim::Steppable {
+/// The composition root of the services: it builds each one with the pieces it needs and, through
+/// the service_links.h interfaces it implements, passes their events on (see node.cpp).
+class Node final : public sim::FrameReceiver,
+                   public sim::Steppable,
+                   private FrameSender,
+                   private RoutesChanged,
+                   private EmcyRequests,
+                   private NmtCommandHandler,
+                   private SyncEvents,
+                   private PdoEvents,
+                   private CommErrorEvents,
+                   private SilenceRequest,
+                   private LssEvents {
  public:
-  static constexpr std::uint8_t kUnconfigured = 0xFF;
+  static constexpr std::uint8_t kUnconfigured = kUnconfiguredNodeId;
 
   Node(std::string name, ObjectDictionary od, NodePolicy policy, std::uint8_t node_id);
   ~Node() override;
@@ -69,14 +82,14 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   const ObjectDictionary& od() const { return od_; }
   NodePolicy& policy() { return policy_; }
   const NodePolicy& policy() const { return policy_; }
-  std::uint8_t node_id() const { return node_id_; }
+  std::uint8_t node_id() const { return status_.node_id; }
   /// The endpoint id on the attached bus (-1 before attach); for Bus::set_online (bus-off faults).
   int endpoint() const { return endpoint_; }
-  std::uint8_t pending_node_id() const { return pending_node_id_; }
+  std::uint8_t pending_node_id() const { return status_.pending_node_id; }
   /// Node-ID that the next communication reset applies (LSS, 0x2000-style objects).
-  void set_pending_node_id(std::uint8_t id) { pending_node_id_ = id; }
-  NmtState nmt_state() const { return nmt_state_; }
-  sim::Time now() const { return now_; }
+  void set_pending_node_id(std::uint8_t id) override { status_.pending_node_id = id; }
+  NmtState nmt_state() const { return status_.nmt_state; }
+  sim::Time now() const { return status_.now; }
 
   Emergency& emergency() { return *emcy_; }
   SdoServer& sdo() { return *sdo_; }
@@ -89,9 +102,9 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
 
   // --- actions --------------------------------------------------------------------------------
   /// Transmits a frame (dropped while powered off, silent or bus-off).
-  void send(const sim::CanFrame& frame);
+  void send(const sim::CanFrame& frame) override;
   /// Executes an NMT command as if received; `sender` names who sent it in the transition log.
-  void execute_nmt(NmtCommand command, std::string_view sender = "the master");
+  void execute_nmt(NmtCommand command, std::string_view sender = "the master") override;
   /// Changes the NMT state directly (e.g. error behaviour 0x1029 → Pre-operational).
   void set_nmt_state(NmtState state);
   /// Bus-off (CAN controller fault): no frame in or out, the device keeps running.
@@ -106,8 +119,8 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   /// when unknown (no LSS, or still detecting on a bus without a rate).
   unsigned bit_rate_kbit() const;
   /// No frame in or out until `until` (e.g. while "saving to EEPROM").
-  void go_silent_until(sim::Time until) { silent_until_ = until; }
-  bool silent() const { return now_ < silent_until_; }
+  void go_silent_until(sim::Time until) override { status_.silent_until = until; }
+  bool silent() const { return status_.silent(); }
   /// The RPDO (1-based) that a frame with this identifier reaches, 0 = none: lets a monitor of
   /// the master check an RPDO's length against its mapping without a table of its own.
   int rpdo_for(std::uint32_t id, bool extended) const {
@@ -115,12 +128,12 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
     return r.route == Route::Rpdo ? r.index : 0;
   }
   /// Re-reads COB-IDs from the object dictionary into the dispatch table.
-  void rebuild_dispatch();
+  void rebuild_dispatch() override;
   /// A communication error (life guarding, heartbeat consumer) began / ended: the application
   /// may handle it; otherwise EMCY per policy and the 0x1029:01 reaction.
   /// `evidence`: the heartbeat producer's node-ID, the guarding life time in ms (transition log).
-  void communication_error(CommError error, std::uint32_t evidence = 0);
-  void communication_recovered(CommError error);
+  void communication_error(CommError error, std::uint32_t evidence = 0) override;
+  void communication_recovered(CommError error) override;
 
   // --- transition log -------------------------------------------------------------------------
   /// Why the NMT state changes now: set by whoever starts a change (command, timeout, power) for
@@ -155,7 +168,6 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   const Stats& stats() const { return stats_; }
 
  private:
-  friend class LssSlave;  // applies a configured node-ID (CiA 305 transition 4)
   enum class Route : std::uint8_t { None, Nmt, Sync, Rpdo, TpdoRtr, SdoRx, ErrorControl, HeartbeatConsumer, Lss };
   struct RouteEntry {
     Route route = Route::None;
@@ -172,8 +184,16 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   void detect_bit_rate(sim::Time now);
   /// Recomputes rx_plain_; called wherever one of the flags it sums up changes.
   void refresh_rx_gate() {
-    rx_plain_ = powered_ && !bus_off_ && !detecting_bit_rate_ && node_id_ >= 1 && node_id_ <= 127 && !boot_pending_;
+    rx_plain_ = powered_ && !bus_off_ && !detecting_bit_rate_ && status_.node_id >= 1 && status_.node_id <= 127 && !boot_pending_;
   }
+  // The services' events that only the node sees (service_links.h).
+  void raise_emcy(std::uint16_t code) override;
+  void clear_emcy(std::uint16_t code) override;
+  void sync_received(std::uint8_t pdo_counter, std::uint8_t counter, sim::Time now) override;
+  void rpdo_received(int number) override { app().on_rpdo(number); }
+  void before_tpdo(int number) override { app().before_tpdo(number); }
+  void apply_pending_node_id() override { reset_communication(); }
+
   void reset_application();
   void reset_communication();
   void send_boot_up();
@@ -186,14 +206,11 @@ class Node final : public sim::FrameReceiver, public sim::Steppable {
   std::string name_;
   ObjectDictionary od_;
   NodePolicy policy_;
-  std::uint8_t node_id_;
-  std::uint8_t pending_node_id_;
-  NmtState nmt_state_ = NmtState::Initialising;
+  /// Node-ID, NMT state, time, silence: read by the services by reference.
+  NodeStatus status_;
   bool powered_ = false;
   bool boot_pending_ = false;
   sim::Time boot_due_{};
-  sim::Time now_{};
-  sim::Time silent_until_{};
   bool bus_off_ = false;
   sim::ErrorState controller_state_ = sim::ErrorState::Active;
   bool detecting_bit_rate_ = false;

@@ -44,10 +44,15 @@ class ParameterStore {
   void put(std::uint16_t index, std::uint8_t sub, Value v) { values_[{index, sub}] = std::move(v); }
   void erase_range(std::uint16_t first, std::uint16_t last);
   void clear() { values_.clear(); }
+  /// Injected failure of the memory (fault injection): "store parameters" and the LSS "store
+  /// configuration" fail (StoreRestore, LssSlave).
+  void set_failing(bool failing) { failing_ = failing; }
+  bool failing() const { return failing_; }
 
  private:
   std::string path_;
   std::map<Key, Value> values_;
+  bool failing_ = false;
 };
 
 }  // namespace canopen

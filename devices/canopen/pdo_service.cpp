@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "devices/canopen/emergency.h"
-#include "devices/canopen/node.h"
 
 namespace canopen {
 
@@ -17,15 +15,17 @@ bool external(Origin o) { return o == Origin::Sdo; }
 
 }  // namespace
 
-PdoService::PdoService(Node& node) : node_(node) {}
+PdoService::PdoService(ObjectDictionary& od, const PdoPolicy& policy, const NodeStatus& status, FrameSender& sender,
+                       PdoEvents& events, EmcyRequests& emcy, RoutesChanged& routes)
+    : od_(od), policy_(policy), status_(status), sender_(sender), events_(events), emcy_(emcy), routes_(routes) {}
 
 MappingRules PdoService::rules() const {
-  const auto& p = node_.policy().pdo;
+  const auto& p = policy_;
   return MappingRules{p.dummy_mapping, p.width_conversion, p.mapping_length_mismatch};
 }
 
 void PdoService::bind_objects() {
-  auto& od = node_.od();
+  auto& od = od_;
   rpdos_.clear();
   tpdos_.clear();
   for (int i = 0; i < kMaxPdos; ++i) {
@@ -85,9 +85,9 @@ void PdoService::walk(const std::vector<std::uint16_t>& list, Visit&& visit) {
 }
 
 void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_index, PdoDirection dir) {
-  auto& od = node_.od();
+  auto& od = od_;
   auto preop_only = [this](const OdEntry&, std::span<std::uint8_t>, Origin origin) {
-    if (external(origin) && node_.policy().pdo.parameters_preop_only && node_.nmt_state() == NmtState::Operational) {
+    if (external(origin) && policy_.parameters_preop_only && status_.nmt_state == NmtState::Operational) {
       return SdoAbort::DataDeviceState;
     }
     return SdoAbort::None;
@@ -98,7 +98,7 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
   };
   auto reload_all = [this](OdEntry&, Origin) {
     reload();
-    node_.rebuild_dispatch();
+    routes_.rebuild_dispatch();
   };
 
   for (auto& [sub, e] : od.object(comm_index)->entries) {
@@ -108,9 +108,9 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
   }
   if (dir == PdoDirection::Transmit && od.entry(comm_index, 5) && od.entry(comm_index, 5)->writable()) {
     od.add_observer(comm_index, 5, [this, comm_index](OdEntry&, Origin) {
-      if (!node_.policy().pdo.event_timer_restart_on_write) return;
+      if (!policy_.event_timer_restart_on_write) return;
       for (auto& t : tpdos_) {
-        if (t.comm_index == comm_index) t.next_timer = node_.now() + sim::milliseconds(event_timer_ms(t));
+        if (t.comm_index == comm_index) t.next_timer = status_.now + sim::milliseconds(event_timer_ms(t));
       }
     });
   }
@@ -121,7 +121,7 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
       const auto new_value = static_cast<std::uint32_t>(decode_unsigned(data));
       const bool new_valid = !(new_value & kInvalid);
       if (new_valid && !(new_value & kExtended) && (new_value & 0x1FFFF800u)) return SdoAbort::InvalidValue;
-      if (node_.policy().pdo.cobid_change_requires_invalid && !(now_value & kInvalid) && new_valid &&
+      if (policy_.cobid_change_requires_invalid && !(now_value & kInvalid) && new_valid &&
           ((now_value ^ new_value) & 0x3FFFFFFFu) != 0) {
         return SdoAbort::InvalidValue;  // CiA 301: change the identifier only while the PDO is invalid
       }
@@ -133,7 +133,7 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
   if (od.entry(comm_index, 2) && od.entry(comm_index, 2)->writable()) {
     od.add_check(comm_index, 2, [this, dir](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
       if (!external(origin)) return SdoAbort::None;
-      const auto& p = node_.policy().pdo;
+      const auto& p = policy_;
       const auto& allowed = dir == PdoDirection::Receive ? p.rpdo_types : p.tpdo_types;
       return allowed.test(data[0]) ? SdoAbort::None : p.bad_transmission_type;
     });
@@ -155,7 +155,7 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
         map_index, sub,
         [this, pdo_valid, &od, map_index, s = sub](const OdEntry&, std::span<std::uint8_t>, Origin origin) {
           if (!external(origin)) return SdoAbort::None;
-          const auto& p = node_.policy().pdo;
+          const auto& p = policy_;
           if (p.mapping_requires_invalid && pdo_valid()) return SdoAbort::DataDeviceState;
           if (s != 0 && p.mapping_entry_requires_sub0_zero) {
             const auto* count = od.entry(map_index, 0);
@@ -184,7 +184,7 @@ void PdoService::install_checks(std::uint16_t comm_index, std::uint16_t map_inde
 }
 
 void PdoService::load(Pdo& p, PdoDirection dir) {
-  auto& od = node_.od();
+  auto& od = od_;
   const auto* cob = od.entry(p.comm_index, 1);
   const std::uint32_t v = cob ? cob->as<std::uint32_t>() : kInvalid;
   p.cob_id = v & ((v & kExtended) ? 0x1FFFFFFFu : 0x7FFu);
@@ -203,7 +203,7 @@ void PdoService::load(Pdo& p, PdoDirection dir) {
 void PdoService::load(Tpdo& t) {
   const bool was_valid = t.valid;
   load(t, PdoDirection::Transmit);
-  const auto* start = node_.od().entry(t.comm_index, 6);
+  const auto* start = od_.entry(t.comm_index, 6);
   t.sync_start = start ? start->as<std::uint8_t>() : 0;
   if (t.valid && !was_valid) {  // a PDO made valid again starts its SYNC counting afresh
     t.sync_count = 0;
@@ -253,29 +253,28 @@ std::uint16_t PdoService::inhibit_100us(const Pdo& p) const { return u16_value(p
 // ---- receive ------------------------------------------------------------------------------------
 
 void PdoService::on_rpdo(int number, const sim::CanFrame& frame, sim::Time now) {
-  if (!pdo_allowed(node_.nmt_state()) || frame.rtr) return;
+  if (!pdo_allowed(status_.nmt_state) || frame.rtr) return;
   auto it = std::find_if(rpdos_.begin(), rpdos_.end(), [number](const Rpdo& r) { return r.number == number; });
   if (it == rpdos_.end() || !it->valid) return;
   Rpdo& r = *it;
-  const auto& policy = node_.policy().pdo;
-  auto& emcy = node_.emergency();
+  const auto& policy = policy_;
   if (frame.dlc < r.mapping.length) {
-    if (policy.rpdo_length_emcy) emcy.raise(kEmcyRpdoShort, node_.policy().error_control.communication_error_register);
+    if (policy.rpdo_length_emcy) emcy_.raise_emcy(kEmcyRpdoShort);
     return;
   }
   if (policy.rpdo_length_emcy) {
     if (frame.dlc > r.mapping.length && policy.rpdo_too_long_is_error) {
-      emcy.raise(kEmcyRpdoLong, node_.policy().error_control.communication_error_register);
+      emcy_.raise_emcy(kEmcyRpdoLong);
     } else {
-      emcy.clear(kEmcyRpdoShort);
-      emcy.clear(kEmcyRpdoLong);
+      emcy_.clear_emcy(kEmcyRpdoShort);
+      emcy_.clear_emcy(kEmcyRpdoLong);
     }
   }
   if (event_timer_ms(r) != 0) {
     r.deadline_armed = true;
     any_deadline_armed_ = true;
     r.last_rx = now;
-    emcy.clear(kEmcyRpdoTimeout);
+    emcy_.clear_emcy(kEmcyRpdoTimeout);
   }
   std::copy(frame.data.begin(), frame.data.end(), r.buffer.begin());
   if (r.type <= 240) {
@@ -287,7 +286,7 @@ void PdoService::on_rpdo(int number, const sim::CanFrame& frame, sim::Time now) 
 }
 
 void PdoService::apply_rpdo(Rpdo& r) {
-  auto& od = node_.od();
+  auto& od = od_;
   std::size_t pos = 0;
   for (const auto& m : r.mapping.objects) {
     if (m.entry) {
@@ -307,13 +306,13 @@ void PdoService::apply_rpdo(Rpdo& r) {
     pos += m.bytes;
   }
   r.latched = false;
-  node_.app().on_rpdo(r.number);
+  events_.rpdo_received(r.number);
   for (auto& t : tpdos_) {
     if (t.number != r.number) continue;
     const auto* trig = async_triggers(t);
     if (trig && trig->after_rpdo) {
       t.event_pending = true;
-      try_send_event(t, node_.now());
+      try_send_event(t, status_.now);
     }
   }
 }
@@ -321,22 +320,22 @@ void PdoService::apply_rpdo(Rpdo& r) {
 // ---- transmit -----------------------------------------------------------------------------------
 
 const PdoPolicy::AsyncTriggers* PdoService::async_triggers(const Tpdo& t) const {
-  if (t.type == 254) return &node_.policy().pdo.type254;
-  if (t.type == 255) return &node_.policy().pdo.type255;
+  if (t.type == 254) return &policy_.type254;
+  if (t.type == 255) return &policy_.type255;
   return nullptr;
 }
 
 void PdoService::sample(Tpdo& t, std::array<std::uint8_t, 8>& out) {
-  node_.app().before_tpdo(t.number);
+  events_.before_tpdo(t.number);
   for (const auto& m : t.mapping.objects) {
     // read() only checks access and runs the hooks: without hooks it does nothing.
-    if (m.entry && !m.entry->read_hooks.empty()) (void)node_.od().read(*m.entry, Origin::Pdo);
+    if (m.entry && !m.entry->read_hooks.empty()) (void)od_.read(*m.entry, Origin::Pdo);
   }
   pack_pdo(t.mapping, out);
 }
 
 std::uint8_t PdoService::wire_length(const Tpdo& t) const {
-  return node_.policy().pdo.pad_tpdo_to_8 ? 8 : static_cast<std::uint8_t>(t.mapping.length);
+  return policy_.pad_tpdo_to_8 ? 8 : static_cast<std::uint8_t>(t.mapping.length);
 }
 
 void PdoService::transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim::Time now) {
@@ -345,7 +344,7 @@ void PdoService::transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim:
   f.extended = t.extended;
   f.dlc = wire_length(t);
   f.data = data;
-  node_.send(f);
+  sender_.send(f);
   t.last_sent = data;
   t.sent_once = true;
   t.event_pending = false;
@@ -355,9 +354,9 @@ void PdoService::transmit(Tpdo& t, const std::array<std::uint8_t, 8>& data, sim:
 }
 
 void PdoService::try_send_event(Tpdo& t, sim::Time now) {
-  if (!pdo_allowed(node_.nmt_state()) || !t.valid || t.mapping.length == 0) return;
+  if (!pdo_allowed(status_.nmt_state) || !t.valid || t.mapping.length == 0) return;
   if (!t.event_pending || now < t.inhibit_until) return;
-  if (t.type == 255 && node_.policy().pdo.type255_off_without_timer && event_timer_ms(t) == 0) {
+  if (t.type == 255 && policy_.type255_off_without_timer && event_timer_ms(t) == 0) {
     t.event_pending = false;
     return;
   }
@@ -383,7 +382,7 @@ void PdoService::set_active(PdoDirection dir, int number, bool active) {
     }
   }
   rebuild_lists();
-  node_.rebuild_dispatch();
+  routes_.rebuild_dispatch();
 }
 
 bool PdoService::active(PdoDirection dir, int number) const {
@@ -401,7 +400,7 @@ void PdoService::request_tpdo(int number) {
   for (auto& t : tpdos_) {
     if (t.number != number) continue;
     t.event_pending = true;
-    if (t.type >= 254) try_send_event(t, node_.now());
+    if (t.type >= 254) try_send_event(t, status_.now);
   }
 }
 
@@ -409,7 +408,7 @@ void PdoService::restart_event_timer(int number) {
   for (auto& t : tpdos_) {
     if (t.number != number) continue;
     const auto et = event_timer_ms(t);
-    t.next_timer = node_.now() + sim::milliseconds(et);
+    t.next_timer = status_.now + sim::milliseconds(et);
   }
 }
 
@@ -419,18 +418,18 @@ void PdoService::set_min_spacing(int number, sim::Duration spacing) {
 }
 
 void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time now) {
-  if (!pdo_allowed(node_.nmt_state()) || !frame.rtr || !node_.policy().pdo.tpdo_remote_requests) return;
+  if (!pdo_allowed(status_.nmt_state) || !frame.rtr || !policy_.tpdo_remote_requests) return;
   auto it = std::find_if(tpdos_.begin(), tpdos_.end(), [number](const Tpdo& t) { return t.number == number; });
   if (it == tpdos_.end() || !it->valid || !it->rtr_allowed || it->mapping.length == 0) return;
   Tpdo& t = *it;
   if (frame.dlc != wire_length(t)) {
-    switch (node_.policy().pdo.rtr_dlc_mismatch) {
+    switch (policy_.rtr_dlc_mismatch) {
       case PdoPolicy::RtrDlcMismatch::Ignore: return;
       case PdoPolicy::RtrDlcMismatch::EmptyFrame: {
         sim::CanFrame empty;
         empty.id = t.cob_id;
         empty.extended = t.extended;
-        node_.send(empty);
+        sender_.send(empty);
         return;
       }
       case PdoPolicy::RtrDlcMismatch::Answer: break;
@@ -446,7 +445,7 @@ void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time n
 }
 
 void PdoService::on_sync(std::uint8_t counter, sim::Time now) {
-  if (!pdo_allowed(node_.nmt_state())) return;
+  if (!pdo_allowed(status_.nmt_state)) return;
   if (any_latched_) {
     any_latched_ = false;  // an RPDO latched again while these are applied sets it anew
     for (auto& r : rpdos_) {
@@ -501,10 +500,10 @@ void PdoService::on_enter_operational(sim::Time now) {
     t.inhibit_until = now;
     const auto et = event_timer_ms(t);
     t.next_timer = now + sim::milliseconds(et);
-    if (node_.policy().pdo.send_async_on_operational && t.type >= 254) {
+    if (policy_.send_async_on_operational && t.type >= 254) {
       t.event_pending = true;
       try_send_event(t, now);
-    } else if (node_.policy().pdo.change_baseline_on_operational && t.type >= 254 && t.valid && t.mapping.length != 0) {
+    } else if (policy_.change_baseline_on_operational && t.type >= 254 && t.valid && t.mapping.length != 0) {
       sample(t, t.last_sent);
       t.sent_once = true;
     }
@@ -512,7 +511,7 @@ void PdoService::on_enter_operational(sim::Time now) {
 }
 
 void PdoService::process(sim::Time now) {
-  if (!pdo_allowed(node_.nmt_state())) return;
+  if (!pdo_allowed(status_.nmt_state)) return;
   if (any_deadline_armed_) {
     any_deadline_armed_ = false;  // set again below for every deadline still running
     for (auto& r : rpdos_) {
@@ -524,7 +523,7 @@ void PdoService::process(sim::Time now) {
       const auto et = event_timer_ms(r);
       if (et != 0 && now - r.last_rx > sim::milliseconds(et)) {
         r.deadline_armed = false;  // one EMCY per timeout; re-armed by the next reception
-        node_.emergency().raise(kEmcyRpdoTimeout, node_.policy().error_control.communication_error_register);
+        emcy_.raise_emcy(kEmcyRpdoTimeout);
       } else {
         any_deadline_armed_ = true;
       }

@@ -10,16 +10,19 @@
 
 #include "devices/canopen/node_policy.h"
 #include "devices/canopen/pdo_mapping.h"
+#include "devices/canopen/service_links.h"
 #include "sim/can_frame.h"
 #include "sim/time.h"
 
 namespace canopen {
 
-class Node;
-
 class PdoService {
  public:
-  explicit PdoService(Node& node);
+  /// `status`: NMT state and time; `events`: RPDO received / TPDO about to be sampled (for the
+  /// application); `emcy`: RPDO length (8210h/8220h) and deadline (8250h) errors; `routes`: a
+  /// PDO's COB-ID or validity changed.
+  PdoService(ObjectDictionary& od, const PdoPolicy& policy, const NodeStatus& status, FrameSender& sender,
+             PdoEvents& events, EmcyRequests& emcy, RoutesChanged& routes);
 
   /// Finds the PDO objects in the dictionary and installs their write checks.
   void bind_objects();
@@ -117,7 +120,13 @@ class PdoService {
   std::uint16_t inhibit_100us(const Pdo& p) const;
   MappingRules rules() const;
 
-  Node& node_;
+  ObjectDictionary& od_;
+  const PdoPolicy& policy_;
+  const NodeStatus& status_;
+  FrameSender& sender_;
+  PdoEvents& events_;
+  EmcyRequests& emcy_;
+  RoutesChanged& routes_;
   std::vector<Rpdo> rpdos_;
   std::vector<Tpdo> tpdos_;
   std::vector<std::uint16_t> sync_tpdos_;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "devices/canopen/node.h"
 
 namespace canopen {
 
@@ -25,16 +24,19 @@ void resize_in_place(DataType type, Bytes& data, std::size_t size) {
 }
 }  // namespace
 
-SdoServer::SdoServer(Node& node) : node_(node) { buffer_.reserve(kBufferReserve); }
+SdoServer::SdoServer(ObjectDictionary& od, const SdoPolicy& policy, const NodeStatus& status, FrameSender& sender)
+    : od_(od), policy_(policy), status_(status), sender_(sender) {
+  buffer_.reserve(kBufferReserve);
+}
 
 std::uint32_t SdoServer::rx_cob_id() const {
-  if (const auto* e = node_.od().entry(kSdoServerParameter, 1)) return e->as<std::uint32_t>();
-  return 0x600u + node_.node_id();
+  if (const auto* e = od_.entry(kSdoServerParameter, 1)) return e->as<std::uint32_t>();
+  return 0x600u + status_.node_id;
 }
 
 std::uint32_t SdoServer::tx_cob_id() const {
-  if (const auto* e = node_.od().entry(kSdoServerParameter, 2)) return e->as<std::uint32_t>();
-  return 0x580u + node_.node_id();
+  if (const auto* e = od_.entry(kSdoServerParameter, 2)) return e->as<std::uint32_t>();
+  return 0x580u + status_.node_id;
 }
 
 void SdoServer::reset() {
@@ -52,11 +54,11 @@ void SdoServer::respond(const std::array<std::uint8_t, 8>& bytes) {
   f.id = cob & (f.extended ? 0x1FFFFFFFu : 0x7FFu);
   f.dlc = 8;
   f.data = bytes;
-  if (node_.silent()) {
+  if (status_.silent()) {
     deferred_ = f;  // e.g. "store parameters" answers only when the save is finished
     return;
   }
-  node_.send(f);
+  sender_.send(f);
 }
 
 void SdoServer::abort(std::uint16_t index, std::uint8_t sub, SdoAbort code) {
@@ -72,7 +74,7 @@ void SdoServer::on_request(const sim::CanFrame& frame, sim::Time now) {
   if (frame.rtr) return;
   std::array<std::uint8_t, 8> req{};
   if (frame.dlc < 8) {
-    if (!node_.policy().sdo.pad_short_requests || frame.dlc == 0) return;
+    if (!policy_.pad_short_requests || frame.dlc == 0) return;
   }
   std::copy_n(frame.data.begin(), frame.dlc, req.begin());
   last_activity_ = now;
@@ -88,7 +90,7 @@ void SdoServer::on_request(const sim::CanFrame& frame, sim::Time now) {
       break;
     default:  // block transfer (5, 6) is not supported; 7 is invalid
       state_ = State::Idle;
-      abort(index_of(req.data()), req[3], node_.policy().sdo.unknown_command);
+      abort(index_of(req.data()), req[3], policy_.unknown_command);
       break;
   }
 }
@@ -105,8 +107,8 @@ SdoAbort SdoServer::fit_size(const OdEntry& e, Bytes& data, bool size_indicated)
     return SdoAbort::None;
   }
   using Mode = SdoPolicy::SizeMode;
-  const Mode mode = node_.policy().sdo.size_mode;
-  const SdoAbort mismatch = node_.policy().sdo.length_mismatch;
+  const Mode mode = policy_.size_mode;
+  const SdoAbort mismatch = policy_.length_mismatch;
   if (data.size() < fixed) {
     if (mode == Mode::Strict) return mismatch != SdoAbort::None ? mismatch : SdoAbort::LengthTooLow;
     resize_in_place(e.type, data, fixed);
@@ -131,12 +133,12 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
   const std::uint16_t index = index_of(req);
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
-  if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
-  if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
-  if (const auto code = node_.od().object(index)->code; code == ObjectCode::DefType || code == ObjectCode::DefStruct) {
-    return abort(index, sub, node_.policy().sdo.type_definition_write);
+  if (!od_.visible(index)) return abort(index, sub, SdoAbort::NoObject);
+  if (auto a = od_.locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
+  if (const auto code = od_.object(index)->code; code == ObjectCode::DefType || code == ObjectCode::DefStruct) {
+    return abort(index, sub, policy_.type_definition_write);
   }
-  if (!e->writable()) return abort(index, sub, node_.od().access_aborts().write_read_only);
+  if (!e->writable()) return abort(index, sub, od_.access_aborts().write_read_only);
 
   const bool expedited = req[0] & 0x02;
   const bool size_indicated = req[0] & 0x01;
@@ -145,22 +147,22 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
     buffer_.assign(req + 4, req + 4 + n);
     if (!size_indicated && type_size(e->type) != 0 && type_size(e->type) < 4) buffer_.resize(type_size(e->type));
     if (auto a = fit_size(*e, buffer_, size_indicated); a != SdoAbort::None) return abort(index, sub, a);
-    if (auto a = node_.od().write(*e, buffer_, Origin::Sdo); a != SdoAbort::None) return abort(index, sub, a);
+    if (auto a = od_.write(*e, buffer_, Origin::Sdo); a != SdoAbort::None) return abort(index, sub, a);
     return respond({0x60, req[1], req[2], sub, 0, 0, 0, 0});
   }
 
-  if (!node_.policy().sdo.segmented_download) return abort(index, sub, node_.policy().sdo.unknown_command);
+  if (!policy_.segmented_download) return abort(index, sub, policy_.unknown_command);
   size_indicated_ = size_indicated;
   expected_size_ = size_indicated ? static_cast<std::size_t>(decode_unsigned({req + 4, 4})) : 0;
   const std::size_t fixed = type_size(e->type);
   if (size_indicated && fixed != 0 && expected_size_ != fixed &&
-      node_.policy().sdo.size_mode == SdoPolicy::SizeMode::Strict) {
-    const SdoAbort mismatch = node_.policy().sdo.length_mismatch;
+      policy_.size_mode == SdoPolicy::SizeMode::Strict) {
+    const SdoAbort mismatch = policy_.length_mismatch;
     if (mismatch != SdoAbort::None) return abort(index, sub, mismatch);
     return abort(index, sub, expected_size_ > fixed ? SdoAbort::LengthTooHigh : SdoAbort::LengthTooLow);
   }
-  if (size_indicated && fixed != 0 && expected_size_ != fixed && node_.policy().sdo.segmented_exact_size) {
-    return abort(index, sub, node_.policy().sdo.segmented_size_mismatch);
+  if (size_indicated && fixed != 0 && expected_size_ != fixed && policy_.segmented_exact_size) {
+    return abort(index, sub, policy_.segmented_size_mismatch);
   }
   if (size_indicated && fixed == 0 && e->max_length != 0 && expected_size_ > e->max_length) {
     return abort(index, sub, SdoAbort::LengthTooHigh);
@@ -175,7 +177,7 @@ void SdoServer::initiate_download(const std::uint8_t* req) {
 }
 
 void SdoServer::download_segment(const std::uint8_t* req) {
-  if (state_ != State::Download) return abort(0, 0, node_.policy().sdo.unknown_command);
+  if (state_ != State::Download) return abort(0, 0, policy_.unknown_command);
   const bool toggle = req[0] & 0x10;
   if (toggle != toggle_) return abort(index_, sub_, SdoAbort::ToggleBit);
   const std::size_t n = 7u - ((req[0] >> 1) & 0x07);
@@ -189,15 +191,15 @@ void SdoServer::download_segment(const std::uint8_t* req) {
 
   state_ = State::Idle;
   if (size_indicated_ && buffer_.size() != expected_size_) {
-    return abort(index_, sub_, node_.policy().sdo.segmented_size_mismatch);
+    return abort(index_, sub_, policy_.segmented_size_mismatch);
   }
   const std::size_t fixed = type_size(entry_->type);
   if (fixed != 0 && buffer_.size() != fixed &&
-      (node_.policy().sdo.size_mode == SdoPolicy::SizeMode::Strict || node_.policy().sdo.segmented_exact_size)) {
-    return abort(index_, sub_, node_.policy().sdo.segmented_size_mismatch);
+      (policy_.size_mode == SdoPolicy::SizeMode::Strict || policy_.segmented_exact_size)) {
+    return abort(index_, sub_, policy_.segmented_size_mismatch);
   }
   if (auto a = fit_size(*entry_, buffer_, true); a != SdoAbort::None) return abort(index_, sub_, a);
-  if (auto a = node_.od().write(*entry_, buffer_, Origin::Sdo); a != SdoAbort::None) return abort(index_, sub_, a);
+  if (auto a = od_.write(*entry_, buffer_, Origin::Sdo); a != SdoAbort::None) return abort(index_, sub_, a);
   entry_ = nullptr;
   respond({response, 0, 0, 0, 0, 0, 0, 0});
 }
@@ -207,9 +209,9 @@ void SdoServer::initiate_upload(const std::uint8_t* req) {
   const std::uint16_t index = index_of(req);
   const std::uint8_t sub = req[3];
   OdEntry* e = nullptr;
-  if (!node_.od().visible(index)) return abort(index, sub, SdoAbort::NoObject);
-  if (auto a = node_.od().locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
-  if (auto a = node_.od().read(*e, Origin::Sdo); a != SdoAbort::None) return abort(index, sub, a);
+  if (!od_.visible(index)) return abort(index, sub, SdoAbort::NoObject);
+  if (auto a = od_.locate(index, sub, e); a != SdoAbort::None) return abort(index, sub, a);
+  if (auto a = od_.read(*e, Origin::Sdo); a != SdoAbort::None) return abort(index, sub, a);
   const std::size_t size = e->value.size();
   if (size >= 1 && size <= 4 && !e->force_segmented) {
     std::array<std::uint8_t, 8> r{static_cast<std::uint8_t>(0x43 | ((4 - size) << 2)), req[1], req[2], sub, 0, 0, 0, 0};
@@ -227,7 +229,7 @@ void SdoServer::initiate_upload(const std::uint8_t* req) {
 }
 
 void SdoServer::upload_segment(const std::uint8_t* req) {
-  if (state_ != State::Upload) return abort(0, 0, node_.policy().sdo.unknown_command);
+  if (state_ != State::Upload) return abort(0, 0, policy_.unknown_command);
   const bool toggle = req[0] & 0x10;
   if (toggle != toggle_) return abort(index_, sub_, SdoAbort::ToggleBit);
   const std::size_t n = std::min<std::size_t>(7, buffer_.size() - offset_);
@@ -242,11 +244,11 @@ void SdoServer::upload_segment(const std::uint8_t* req) {
 }
 
 void SdoServer::process(sim::Time now) {
-  if (deferred_ && !node_.silent()) {
-    node_.send(*deferred_);
+  if (deferred_ && !status_.silent()) {
+    sender_.send(*deferred_);
     deferred_.reset();
   }
-  const auto timeout = node_.policy().sdo.timeout;
+  const auto timeout = policy_.timeout;
   if (state_ != State::Idle && timeout.count() > 0 && now - last_activity_ >= timeout) {
     abort(index_, sub_, SdoAbort::Timeout);
   }

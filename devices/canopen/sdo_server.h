@@ -5,17 +5,18 @@
 #include <cstdint>
 #include <optional>
 
+#include "devices/canopen/node_policy.h"
 #include "devices/canopen/object_dictionary.h"
+#include "devices/canopen/service_links.h"
 #include "sim/can_frame.h"
 #include "sim/time.h"
 
 namespace canopen {
 
-class Node;
-
 class SdoServer {
  public:
-  explicit SdoServer(Node& node);
+  /// `status`: node-ID (default COB-IDs) and silence (a response waits until it ends).
+  SdoServer(ObjectDictionary& od, const SdoPolicy& policy, const NodeStatus& status, FrameSender& sender);
 
   /// COB-IDs in use (from 0x1200 if present, else the predefined connection set).
   std::uint32_t rx_cob_id() const;
@@ -41,7 +42,10 @@ class SdoServer {
   void respond(const std::array<std::uint8_t, 8>& bytes);
   void abort(std::uint16_t index, std::uint8_t sub, SdoAbort code);
 
-  Node& node_;
+  ObjectDictionary& od_;
+  const SdoPolicy& policy_;
+  const NodeStatus& status_;
+  FrameSender& sender_;
   State state_ = State::Idle;
   std::uint16_t index_ = 0;
   std::uint8_t sub_ = 0;

@@ -2,7 +2,6 @@
 
 #include <cstdio>
 
-#include "devices/canopen/node.h"
 #include "sim/log.h"
 
 namespace canopen {
@@ -25,12 +24,14 @@ std::string number_text(DataType type, std::span<const std::uint8_t> bytes) {
 }
 }  // namespace
 
-StoreRestore::StoreRestore(Node& node) : node_(node), store_(node.policy().store.path) {}
+StoreRestore::StoreRestore(ObjectDictionary& od, const StorePolicy& policy, const NodeStatus& status,
+                           const std::string& node_name, SilenceRequest& silence)
+    : od_(od), policy_(policy), status_(status), node_name_(node_name), silence_(silence), store_(policy.path) {}
 
 StoreRestore::Ranges StoreRestore::group_ranges(std::uint8_t sub) const {
-  for (const auto& g : node_.policy().store.groups)
+  for (const auto& g : policy_.groups)
     if (g.sub == sub) return g.ranges;
-  if (!node_.policy().store.groups.empty()) return {};
+  if (!policy_.groups.empty()) return {};
   switch (sub) {
     case 1: return {{0x1000, 0xFFFF}};
     case 2: return {{0x1000, 0x1FFF}};
@@ -46,7 +47,7 @@ bool StoreRestore::storable(const OdEntry& e) {
 }
 
 void StoreRestore::bind_objects() {
-  auto& od = node_.od();
+  auto& od = od_;
   for (std::uint16_t idx : {kStore, kRestore}) {
     auto* obj = od.object(idx);
     if (!obj) continue;
@@ -55,11 +56,11 @@ void StoreRestore::bind_objects() {
       od.add_check(idx, sub, [this, idx, s = sub](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
         if (origin != Origin::Sdo) return SdoAbort::None;
         const auto v = static_cast<std::uint32_t>(decode_unsigned(data));
-        if (v != (idx == kStore ? kSaveSignature : kLoadSignature)) return node_.policy().store.wrong_signature;
+        if (v != (idx == kStore ? kSaveSignature : kLoadSignature)) return policy_.wrong_signature;
         return idx == kStore ? save_group(s) : restore_group(s);
       });
       // Reading back shows the capability (default 1), never the signature.
-      od.add_observer(idx, sub, [this](OdEntry& entry, Origin) { entry.reset_to_default(node_.node_id()); });
+      od.add_observer(idx, sub, [this](OdEntry& entry, Origin) { entry.reset_to_default(status_.node_id); });
     }
   }
 }
@@ -68,9 +69,9 @@ bool StoreRestore::power_on(std::string& error) {
   pending_restore_.clear();
   reported_.clear();
   rejected_.clear();
-  store_.set_path(node_.policy().store.path);
+  store_.set_path(policy_.path);
   const bool ok = store_.load(error);
-  for (const auto& p : node_.policy().store.preset) store_.put(p.index, p.sub, ParameterStore::Value{false, p.bytes});
+  for (const auto& p : policy_.preset) store_.put(p.index, p.sub, ParameterStore::Value{false, p.bytes});
   return ok;
 }
 
@@ -82,8 +83,8 @@ bool StoreRestore::in_pending_restore(std::uint16_t index) const {
 }
 
 void StoreRestore::load_area(std::uint16_t first, std::uint16_t last) {
-  auto& od = node_.od();
-  od.reset_range(first, last, node_.node_id());
+  auto& od = od_;
+  od.reset_range(first, last, status_.node_id);
   for (const auto& [key, v] : store_.values()) {
     if (key.first < first || key.first > last || in_pending_restore(key.first)) continue;
     if (device_stored_.count(key) && !od.entry(key.first, key.second)) continue;  // a private cell
@@ -91,7 +92,7 @@ void StoreRestore::load_area(std::uint16_t first, std::uint16_t last) {
     if (const std::string why = refusal(key, v, value); !why.empty()) {
       if (reported_.insert(key).second) {
         rejected_.push_back(store_.where(v) + ": " + why);
-        sim::log(sim::LogLevel::Warn, "node {}: {}; the entry keeps its default", node_.name(), rejected_.back());
+        sim::log(sim::LogLevel::Warn, "node {}: {}; the entry keeps its default", node_name_, rejected_.back());
       }
       continue;
     }
@@ -102,8 +103,8 @@ void StoreRestore::load_area(std::uint16_t first, std::uint16_t last) {
 std::string StoreRestore::refusal(const ParameterStore::Key& key, const ParameterStore::Value& v, Bytes& out) const {
   char name[24];
   std::snprintf(name, sizeof name, "%04Xh sub %u", key.first, key.second);
-  const OdEntry* e = node_.od().entry(key.first, key.second);
-  if (!e) return std::string(name) + (node_.od().object(key.first) ? ": no such sub-index" : ": no such object");
+  const OdEntry* e = od_.entry(key.first, key.second);
+  if (!e) return std::string(name) + (od_.object(key.first) ? ": no such sub-index" : ": no such object");
   if (e->access == Access::Const) return std::string(name) + " is constant";
   if (!e->writable() && !device_stored_.count(key)) return std::string(name) + " is read-only";
   const std::size_t fixed = type_size(e->type);
@@ -120,10 +121,10 @@ std::string StoreRestore::refusal(const ParameterStore::Key& key, const Paramete
       return "$NODEID+ value for " + std::string(name) + ", which is not an integer";
     }
     const std::uint64_t base = decode_unsigned(v.bytes);
-    const std::uint64_t sum = base + node_.node_id();
+    const std::uint64_t sum = base + status_.node_id;
     const bool overflow = fixed < 8 ? (sum >> (8 * fixed)) != 0 : sum < base;
     if (overflow) {
-      return "$NODEID+" + std::to_string(base) + " overflows " + type + " with node-ID " + std::to_string(node_.node_id()) +
+      return "$NODEID+" + std::to_string(base) + " overflows " + type + " with node-ID " + std::to_string(status_.node_id) +
              " (" + name + ")";
     }
     encode_unsigned(sum, out);
@@ -140,14 +141,14 @@ std::string StoreRestore::refusal(const ParameterStore::Key& key, const Paramete
 SdoAbort StoreRestore::save_group(std::uint8_t sub) {
   const auto ranges = group_ranges(sub);
   if (ranges.empty()) return SdoAbort::DataTransfer;
-  if (failing_) return node_.policy().store.hardware_error;
-  const bool freeze = node_.policy().store.freeze_node_relative;
+  if (store_.failing()) return policy_.hardware_error;
+  const bool freeze = policy_.freeze_node_relative;
   for (const auto& [first, last] : ranges) {
-    for (auto it = node_.od().objects().lower_bound(first); it != node_.od().objects().end() && it->first <= last; ++it) {
+    for (auto it = od_.objects().lower_bound(first); it != od_.objects().end() && it->first <= last; ++it) {
       for (const auto& [s, e] : it->second.entries) {
         if (!storable(e)) continue;
         ParameterStore::Value v;
-        if (!freeze && e.node_id_relative && e.value == e.default_for_node(node_.node_id())) {
+        if (!freeze && e.node_id_relative && e.value == e.default_for_node(status_.node_id)) {
           v.node_relative = true;
           v.bytes = e.default_value;
         } else {
@@ -163,36 +164,36 @@ SdoAbort StoreRestore::save_group(std::uint8_t sub) {
   }
   std::string error;
   if (!store_.save(error)) {
-    sim::log(sim::LogLevel::Error, "node {}: {}", node_.name(), error);
-    return node_.policy().store.hardware_error;
+    sim::log(sim::LogLevel::Error, "node {}: {}", node_name_, error);
+    return policy_.hardware_error;
   }
-  const auto busy = node_.policy().store.busy_time;
-  if (busy.count() > 0) node_.go_silent_until(node_.now() + busy);
+  const auto busy = policy_.busy_time;
+  if (busy.count() > 0) silence_.go_silent_until(status_.now + busy);
   return SdoAbort::None;
 }
 
 SdoAbort StoreRestore::save_entry(std::uint16_t index, std::uint8_t sub) {
-  const OdEntry* e = node_.od().entry(index, sub);
+  const OdEntry* e = od_.entry(index, sub);
   if (!e) return SdoAbort::NoObject;
-  if (failing_) return node_.policy().store.hardware_error;
+  if (store_.failing()) return policy_.hardware_error;
   store_.put(index, sub, ParameterStore::Value{false, e->value});
   std::string error;
-  return store_.save(error) ? SdoAbort::None : node_.policy().store.hardware_error;
+  return store_.save(error) ? SdoAbort::None : policy_.hardware_error;
 }
 
 SdoAbort StoreRestore::restore_group(std::uint8_t sub) {
   const auto ranges = group_ranges(sub);
   if (ranges.empty()) return SdoAbort::DataTransfer;
-  if (failing_) return node_.policy().store.hardware_error;
-  if (node_.policy().store.restore == StorePolicy::Restore::PendingUntilReset) {
+  if (store_.failing()) return policy_.hardware_error;
+  if (policy_.restore == StorePolicy::Restore::PendingUntilReset) {
     pending_restore_.insert(sub);
   } else {
     for (const auto& [first, last] : ranges) store_.erase_range(first, last);
     std::string error;
-    if (!store_.save(error)) return node_.policy().store.hardware_error;
+    if (!store_.save(error)) return policy_.hardware_error;
   }
-  const auto busy = node_.policy().store.restore_busy_time;
-  if (busy.count() > 0) node_.go_silent_until(node_.now() + busy);
+  const auto busy = policy_.restore_busy_time;
+  if (busy.count() > 0) silence_.go_silent_until(status_.now + busy);
   return SdoAbort::None;
 }
 

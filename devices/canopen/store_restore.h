@@ -8,18 +8,21 @@
 #include <utility>
 #include <vector>
 
+#include "devices/canopen/node_policy.h"
 #include "devices/canopen/parameter_store.h"
+#include "devices/canopen/service_links.h"
 
 namespace canopen {
-
-class Node;
 
 class StoreRestore {
  public:
   static constexpr std::uint32_t kSaveSignature = 0x65766173;  // "save"
   static constexpr std::uint32_t kLoadSignature = 0x64616F6C;  // "load"
 
-  explicit StoreRestore(Node& node);
+  /// `status`: node-ID (node-relative values) and time; `node_name` names the node in log lines;
+  /// `silence`: the node is busy saving (StorePolicy::busy_time).
+  StoreRestore(ObjectDictionary& od, const StorePolicy& policy, const NodeStatus& status, const std::string& node_name,
+               SilenceRequest& silence);
   void bind_objects();
 
   /// Power-on: reads non-volatile memory (the file); pending restores are forgotten.
@@ -48,8 +51,8 @@ class StoreRestore {
   const std::vector<std::string>& rejected() const { return rejected_; }
   /// Injected failure of the non-volatile memory (fault injection): save/restore abort
   /// with 0x06060000.
-  void set_failing(bool failing) { failing_ = failing; }
-  bool failing() const { return failing_; }
+  void set_failing(bool failing) { store_.set_failing(failing); }
+  bool failing() const { return store_.failing(); }
 
  private:
   using Ranges = std::vector<std::pair<std::uint16_t, std::uint16_t>>;
@@ -58,13 +61,16 @@ class StoreRestore {
   static bool storable(const OdEntry& e);
   std::string refusal(const ParameterStore::Key& key, const ParameterStore::Value& v, Bytes& out) const;
 
-  Node& node_;
+  ObjectDictionary& od_;
+  const StorePolicy& policy_;
+  const NodeStatus& status_;
+  const std::string& node_name_;
+  SilenceRequest& silence_;
   ParameterStore store_;
   std::set<std::uint8_t> pending_restore_;
   std::set<ParameterStore::Key> device_stored_;
   std::set<ParameterStore::Key> reported_;
   std::vector<std::string> rejected_;
-  bool failing_ = false;
 };
 
 }  // namespace canopen

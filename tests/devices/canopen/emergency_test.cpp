@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/devices/canopen/fake_node_links.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -111,4 +112,20 @@ TEST(EmcyPolicyKnobs, NoEmcyInPreOperationalWhenTheManualSaysSo) {
   h.take();
   h.node().emergency().raise(0x6000, 0x81);
   EXPECT_EQ(h.take(), Frames{Frame(0x085, {0x00, 0x60, 0x81, 0, 0, 0, 0, 0})});
+}
+
+TEST(Emergency, WiredFromAboveSendsThroughItsSender) {
+  vtest::FakeNodeLinks links;
+  links.status.node_id = 5;
+  links.status.nmt_state = canopen::NmtState::PreOperational;
+  auto od = vtest::make_generic_od();
+  od.reset_range(0x1000, 0x1FFF, 5);  // node-relative COB-IDs for node 5
+  canopen::EmcyPolicy policy;
+  canopen::Emergency emcy(od, policy, links.status, links);
+  emcy.bind_objects();
+  emcy.raise(0x2310, 0x03);
+  EXPECT_EQ(links.sent, Frames{Frame(0x085, {0x10, 0x23, 0x03, 0, 0, 0, 0, 0})});
+  links.status.nmt_state = canopen::NmtState::Stopped;  // no EMCY in Stopped
+  emcy.raise(0x3120, 0x05);
+  EXPECT_EQ(links.sent.size(), 1u);
 }

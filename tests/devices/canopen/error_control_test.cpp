@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/devices/canopen/fake_node_links.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -116,4 +117,23 @@ TEST(LifeGuarding, HeartbeatDisarmsLifeGuardingWhenGuardingIsExclusive) {
   h.run_ms(900);
   EXPECT_TRUE(h.take().empty());  // no life-guarding EMCY: guarding is off while the heartbeat runs
   EXPECT_FALSE(h.node().error_control().life_guarding_armed());
+}
+
+TEST(ErrorControl, WiredFromAboveReportsTheLifeGuardingTimeout) {
+  vtest::FakeNodeLinks links;
+  links.status.node_id = 5;
+  links.status.nmt_state = canopen::NmtState::PreOperational;
+  auto od = vtest::make_generic_od();
+  od.set<std::uint16_t>(0x100C, 0, 100);
+  od.set<std::uint8_t>(0x100D, 0, 3);
+  canopen::ErrorControlPolicy policy;
+  canopen::ErrorControl ec(od, policy, links.status, links, links);
+  ec.bind_objects();
+  ec.reset_communication(sim::Time{});
+  ec.on_frame(Frame::remote(0x705, 1).to_can(), sim::Time{});
+  EXPECT_EQ(links.sent, Frames{Frame(0x705, {0x7F})});
+  ec.process(sim::Time{} + sim::milliseconds(300));
+  EXPECT_TRUE(links.comm_errors.empty());
+  ec.process(sim::Time{} + sim::milliseconds(301));
+  EXPECT_EQ(links.comm_errors, (std::vector<std::pair<canopen::CommError, std::uint32_t>>{{canopen::CommError::LifeGuarding, 300}}));
 }

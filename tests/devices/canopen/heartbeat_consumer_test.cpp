@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "devices/transition_log.h"
+#include "tests/devices/canopen/fake_node_links.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -80,4 +81,22 @@ TEST(HeartbeatConsumer, DuplicateCheckCanBeSwitchedOff) {
   h.power_on();
   ASSERT_EQ(h.write(0x1016, 1, (0x20u << 16) | 150u, 4), 0u);
   EXPECT_EQ(h.write(0x1016, 2, (0x20u << 16) | 200u, 4), 0u);
+}
+
+TEST(HeartbeatConsumer, WiredFromAboveReportsTheTimeoutAndNewRoutes) {
+  vtest::FakeNodeLinks links;
+  auto od = vtest::make_generic_od();
+  canopen::ErrorControlPolicy policy;
+  canopen::HeartbeatConsumer hb(od, policy, links, links);
+  hb.bind_objects();
+  ASSERT_EQ(od.write(*od.entry(0x1016, 1), canopen::ObjectDictionary::encode(canopen::DataType::Unsigned32, 0x00070064),
+                     canopen::Origin::Sdo),
+            canopen::SdoAbort::None);
+  EXPECT_EQ(links.routes_changed, 1);
+  EXPECT_EQ(hb.producers(), std::vector<std::uint8_t>{7});
+  hb.on_frame(Frame(0x707, {0x05}).to_can(), sim::Time{});
+  hb.process(sim::Time{} + sim::milliseconds(100));
+  EXPECT_TRUE(links.comm_errors.empty());
+  hb.process(sim::Time{} + sim::milliseconds(101));
+  EXPECT_EQ(links.comm_errors, (std::vector<std::pair<canopen::CommError, std::uint32_t>>{{canopen::CommError::HeartbeatConsumer, 7}}));
 }

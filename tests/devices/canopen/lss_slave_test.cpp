@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/devices/canopen/fake_node_links.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -191,4 +192,22 @@ TEST(LssServices, ConfigurationServicesWithoutTheProtocol) {
   EXPECT_EQ(h.take(), Frames{Frame(0x709, {0x00})});
   EXPECT_EQ(lss_slave.active_bit_rate(), 4);
   std::remove(policy.store.path.c_str());
+}
+
+TEST(LssSlave, WiredFromAboveAsksToApplyTheConfiguredNodeId) {
+  vtest::FakeNodeLinks links;
+  links.status.node_id = canopen::kUnconfiguredNodeId;
+  links.status.pending_node_id = canopen::kUnconfiguredNodeId;
+  const auto od = vtest::make_generic_od();
+  canopen::ParameterStore memory;
+  canopen::LssSlave lss({}, od, links.status, memory, links, links, links);
+  lss.power_on();
+  lss.on_frame(Frame(0x7E5, {0x04, 0x01, 0, 0, 0, 0, 0, 0}).to_can(), sim::Time{});  // configuration
+  lss.on_frame(Frame(0x7E5, {0x11, 0x0A, 0, 0, 0, 0, 0, 0}).to_can(), sim::Time{});  // node-ID 10
+  lss.on_frame(Frame(0x7E5, {0x17, 0, 0, 0, 0, 0, 0, 0}).to_can(), sim::Time{});     // store
+  EXPECT_EQ(links.pending_node_ids, std::vector<std::uint8_t>{0x0A});
+  EXPECT_EQ(links.node_id_applied, 0);
+  lss.on_frame(Frame(0x7E5, {0x04, 0x00, 0, 0, 0, 0, 0, 0}).to_can(), sim::Time{});  // waiting
+  EXPECT_EQ(links.node_id_applied, 1);
+  EXPECT_EQ(links.sent, (Frames{Frame(0x7E4, {0x11, 0, 0, 0, 0, 0, 0, 0}), Frame(0x7E4, {0x17, 0, 0, 0, 0, 0, 0, 0})}));
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "devices/transition_log.h"
+#include "tests/devices/canopen/fake_node_links.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -144,4 +145,16 @@ TEST(NmtSlave, TransitionsAreRecordedWithTheirCause) {
   ASSERT_EQ(off.size(), 1u);
   EXPECT_EQ(off[0].to, "OFF");
   EXPECT_EQ(off[0].cause, devices::TransitionCause::Power);
+}
+
+TEST(NmtSlave, WiredFromAboveHandsAddressedCommandsOn) {
+  vtest::FakeNodeLinks links;
+  links.status.node_id = 5;
+  canopen::NmtPolicy policy;
+  canopen::NmtSlave nmt(policy, links.status, links);
+  nmt.on_frame(Frame(0x000, {0x01, 5}).to_can());
+  nmt.on_frame(Frame(0x000, {0x80, 6}).to_can());  // another node
+  nmt.on_frame(Frame(0x000, {0x82, 0}).to_can());  // broadcast
+  EXPECT_EQ(links.nmt_commands,
+            (std::vector<canopen::NmtCommand>{canopen::NmtCommand::Start, canopen::NmtCommand::ResetCommunication}));
 }

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "devices/canopen/emergency.h"
+#include "tests/devices/canopen/fake_node_links.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -555,4 +556,21 @@ TEST(PdoWidthConversion, NarrowObjectsInWideSlotsAreSignOrZeroExtendedAndWideOne
   ASSERT_EQ(h.write(0x1801, 1, 0x00000285, 4), 0u);
   h.send(0x080, {});
   EXPECT_EQ(h.take(), Frames{Frame(0x285, {0xFF, 0xFF})});
+}
+
+TEST(PdoService, WiredFromAboveRaisesTheLengthEmcyAndReportsTheRpdo) {
+  vtest::FakeNodeLinks links;
+  links.status.node_id = 5;
+  links.status.nmt_state = canopen::NmtState::Operational;
+  auto od = vtest::make_generic_od();
+  canopen::PdoPolicy policy;
+  canopen::PdoService pdo(od, policy, links.status, links, links, links, links);
+  pdo.bind_objects();
+  pdo.reload();
+  pdo.on_rpdo(1, Frame(0x205, {1, 2, 3}).to_can(), sim::Time{});  // mapped: 6 bytes
+  EXPECT_EQ(links.raised, std::vector<std::uint16_t>{0x8210});
+  EXPECT_TRUE(links.rpdos.empty());
+  pdo.on_rpdo(1, Frame(0x205, {0x78, 0x56, 0x34, 0x12, 0xCD, 0xAB}).to_can(), sim::Time{});
+  EXPECT_EQ(links.rpdos, std::vector<int>{1});
+  EXPECT_EQ(od.get<std::int32_t>(0x6001, 0), 0x12345678);
 }

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/devices/canopen/fake_node_links.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 
@@ -230,4 +231,15 @@ TEST(SdoSegmentedExactSize, LenientExpeditedButExactSegmented) {
   EXPECT_EQ(h.write(0x2000, 0, 7, 4), 0u);                      // expedited: excess zero bytes accepted
   EXPECT_EQ(h.download(0x2000, 0, {7, 0}), 0x06070010u);        // segmented with a size: refused at initiate
   EXPECT_EQ(h.download(0x2006, 0, {1, 2, 3, 4, 5, 6, 7, 8}), 0u);  // exact: fine
+}
+
+TEST(SdoServer, WiredFromAboveAnswersThroughItsSender) {
+  vtest::FakeNodeLinks links;
+  links.status.node_id = 5;
+  auto od = vtest::make_generic_od();
+  od.reset_range(0x1000, 0x1FFF, 5);  // node-relative COB-IDs for node 5
+  canopen::SdoPolicy policy;
+  canopen::SdoServer sdo(od, policy, links.status, links);
+  sdo.on_request(Frame(0x605, {0x40, 0x00, 0x20, 0x00, 0, 0, 0, 0}).to_can(), sim::Time{});
+  EXPECT_EQ(links.sent, Frames{Frame(0x585, {0x4F, 0x00, 0x20, 0x00, 7, 0, 0, 0})});
 }

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "tests/devices/canopen/fake_node_links.h"
 #include "tests/devices/canopen/generic_node.h"
 #include "tests/support/canopen_harness.h"
 #include "tests/support/temp_path.h"
@@ -258,4 +259,20 @@ TEST(ParameterStore, OnlyARegularFileIsReadAndNeverBlocks) {
 
   EXPECT_FALSE(canopen::ParameterStore("/dev/zero").load(error));
   EXPECT_EQ(error, "/dev/zero: not a regular file (a character device)");
+}
+
+TEST(StoreRestore, WiredFromAboveAsksForSilenceWhileSaving) {
+  vtest::FakeNodeLinks links;
+  links.status.node_id = 5;
+  links.status.now = sim::Time{} + sim::milliseconds(1000);
+  auto od = vtest::make_generic_od();
+  canopen::StorePolicy policy;
+  policy.busy_time = sim::milliseconds(50);
+  canopen::StoreRestore store(od, policy, links.status, "node", links);
+  store.bind_objects();
+  od.set<std::uint8_t>(0x2000, 0, 42);
+  EXPECT_EQ(store.save_group(1), canopen::SdoAbort::None);
+  EXPECT_EQ(links.silent_until, sim::Time{} + sim::milliseconds(1050));
+  ASSERT_NE(store.memory().find(0x2000, 0), nullptr);
+  EXPECT_EQ(store.memory().find(0x2000, 0)->bytes, canopen::Bytes{42});
 }
