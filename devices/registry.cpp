@@ -1,8 +1,8 @@
 #include "devices/registry.h"
 
 // Each product adds one include and one entry below.
-#include "devices/dsv/dsv_product.h"
-#include "devices/md2/md2_product.h"
+#include "devices/dsv/product.h"
+#include "devices/md2/product.h"
 #include "devices/vtvpcd/product.h"
 #include "devices/hlt1100/hlt1100_device.h"
 #include "devices/wdga/wdga_device.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "devices/dsv/dsv.h"
+#include "devices/dsv/dsv_device.h"
 #include "tests/support/canopen_harness.h"
 #include "tests/support/temp_path.h"
 

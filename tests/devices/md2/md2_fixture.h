@@ -8,7 +8,7 @@
 #include <string>
 
 #include "devices/canopen/emergency.h"
-#include "devices/md2/md2.h"
+#include "devices/md2/md2_device.h"
 #include "tests/support/canopen_harness.h"
 
 namespace md2test {

@@ -10,7 +10,7 @@
 #include <set>
 #include <string>
 
-namespace cia406 {
+namespace devices {
 
 class SettingsReader {
  public:
@@ -49,4 +49,4 @@ class SettingsReader {
   std::string error_;
 };
 
-}  // namespace cia406
+}  // namespace devices

@@ -1,4 +1,4 @@
-#include "devices/dsv/dsv.h"
+#include "devices/dsv/dsv_device.h"
 
 #include <array>
 #include <bit>

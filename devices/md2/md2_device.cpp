@@ -1,4 +1,4 @@
-#include "devices/md2/md2.h"
+#include "devices/md2/md2_device.h"
 
 #include <array>
 #include <bit>

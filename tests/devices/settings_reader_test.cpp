@@ -1,8 +1,8 @@
-#include "devices/profiles/cia406/settings_reader.h"
+#include "devices/settings_reader.h"
 
 #include <gtest/gtest.h>
 
-namespace cia406 {
+namespace devices {
 namespace {
 
 TEST(SettingsReader, TypedValuesDefaultsAndUnknownNames) {
@@ -38,4 +38,4 @@ TEST(SettingsReader, ErrorsNameTheSetting) {
 }
 
 }  // namespace
-}  // namespace cia406
+}  // namespace devices

@@ -1,10 +1,10 @@
-#include "devices/profiles/cia406/settings_reader.h"
+#include "devices/settings_reader.h"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
-namespace cia406 {
+namespace devices {
 
 const std::string* SettingsReader::find(const std::string& name) {
   known_.insert(name);
@@ -97,4 +97,4 @@ std::string SettingsReader::finish() const {
   return {};
 }
 
-}  // namespace cia406
+}  // namespace devices
