@@ -1,15 +1,46 @@
 #include "devices/settings_reader.h"
 
-#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 
 namespace devices {
 
+namespace {
+
+// Decimal or 0x-hex (never octal: "010" is ten), optionally negative when decimal.
+bool parse_integer(const std::string& text, bool is_signed, std::int64_t& s, std::uint64_t& u) {
+  const char* first = text.c_str();
+  const char* last = first + text.size();
+  const bool negative = first != last && *first == '-';
+  if (negative && !is_signed) return false;
+  int base = 10;
+  if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'X')) {
+    first += 2;
+    base = 16;
+  }
+  if (first == last || (base == 16 && negative)) return false;
+  const auto [ptr, ec] = is_signed ? std::from_chars(first, last, s, base) : std::from_chars(first, last, u, base);
+  return ec == std::errc() && ptr == last;
+}
+
+}  // namespace
+
+void SettingsReader::deprecated(const std::string& old_name, const std::string& name) { deprecated_[name] = old_name; }
+
 const std::string* SettingsReader::find(const std::string& name) {
   known_.insert(name);
   const auto it = settings_.find(name);
-  return it == settings_.end() ? nullptr : &it->second;
+  const auto old = deprecated_.find(name);
+  if (old == deprecated_.end()) return it == settings_.end() ? nullptr : &it->second;
+  const auto old_it = settings_.find(old->second);
+  if (old_it == settings_.end()) return it == settings_.end() ? nullptr : &it->second;
+  if (it != settings_.end()) {
+    if (error_.empty()) error_ = "setting '" + old->second + "' is the deprecated name of '" + name + "': give only '" + name + "'";
+    return nullptr;
+  }
+  warnings_.push_back("setting '" + old->second + "' is deprecated: use '" + name + "'");
+  return &old_it->second;
 }
 
 void SettingsReader::fail(const std::string& name, const std::string& text, const std::string& expected) {
@@ -20,11 +51,9 @@ void SettingsReader::get(const std::string& name, std::uint64_t& value, std::uin
   const auto* text = find(name);
   if (!text) return;
   const std::string range = std::to_string(min) + ".." + std::to_string(max);
-  if (text->empty() || (*text)[0] == '-') return fail(name, *text, "an integer in " + range);
-  errno = 0;
-  char* end = nullptr;
-  const unsigned long long v = std::strtoull(text->c_str(), &end, 0);
-  if (errno != 0 || *end != '\0' || v < min || v > max) return fail(name, *text, "an integer in " + range);
+  std::int64_t unused = 0;
+  std::uint64_t v = 0;
+  if (!parse_integer(*text, false, unused, v) || v < min || v > max) return fail(name, *text, "an integer in " + range);
   value = v;
 }
 
@@ -32,10 +61,9 @@ void SettingsReader::get(const std::string& name, std::int64_t& value, std::int6
   const auto* text = find(name);
   if (!text) return;
   const std::string range = std::to_string(min) + ".." + std::to_string(max);
-  errno = 0;
-  char* end = nullptr;
-  const long long v = std::strtoll(text->c_str(), &end, 0);
-  if (text->empty() || errno != 0 || *end != '\0' || v < min || v > max) return fail(name, *text, "an integer in " + range);
+  std::int64_t v = 0;
+  std::uint64_t unused = 0;
+  if (!parse_integer(*text, true, v, unused) || v < min || v > max) return fail(name, *text, "an integer in " + range);
   value = v;
 }
 
@@ -50,6 +78,15 @@ void SettingsReader::get(const std::string& name, double& value, double min, dou
   value = v;
 }
 
+void SettingsReader::get(const std::string& name, double& value) {
+  const auto* text = find(name);
+  if (!text) return;
+  char* end = nullptr;
+  const double v = std::strtod(text->c_str(), &end);
+  if (text->empty() || *end != '\0' || !std::isfinite(v)) return fail(name, *text, "a number");
+  value = v;
+}
+
 void SettingsReader::get(const std::string& name, bool& value) {
   const auto* text = find(name);
   if (!text) return;
@@ -58,7 +95,7 @@ void SettingsReader::get(const std::string& name, bool& value) {
   } else if (*text == "off" || *text == "false" || *text == "0" || *text == "no") {
     value = false;
   } else {
-    fail(name, *text, "on or off");
+    fail(name, *text, "on or off (true/false, yes/no, 1/0)");
   }
 }
 
@@ -88,13 +125,17 @@ void SettingsReader::choose(const std::string& name, int& value, std::initialize
 std::string SettingsReader::finish() const {
   if (!error_.empty()) return error_;
   for (const auto& [name, text] : settings_) {
-    if (!known_.count(name)) {
-      std::string list;
-      for (const auto& k : known_) list += (list.empty() ? "" : ", ") + k;
-      return "unknown setting '" + name + "' (settings: " + list + ")";
-    }
+    bool deprecated_name = false;
+    for (const auto& [current, old] : deprecated_) deprecated_name |= old == name;
+    if (!known_.count(name) && !deprecated_name) return unknown_setting(name, known_);
   }
   return {};
+}
+
+std::string unknown_setting(const std::string& name, const std::set<std::string>& known) {
+  std::string list;
+  for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+  return "unknown setting '" + name + "' (" + (list.empty() ? "no settings" : "settings: " + list) + ")";
 }
 
 }  // namespace devices

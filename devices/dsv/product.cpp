@@ -30,7 +30,7 @@ devices::Product product() {
       "Wandfluh DSV valve electronics, CANopen CiA DSP 408 (one valve, 1 or 2 solenoids)",
       {"amplifier", "controller"},
       [](const devices::DeviceOptions& options, std::string& error) -> std::unique_ptr<devices::Device> {
-        return Dsv::create(options, error);
+        return DsvDevice::create(options, error);
       },
       [](const std::string& variant) { return eds(variant); },
   };

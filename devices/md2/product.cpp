@@ -29,7 +29,7 @@ devices::Product product() {
       "Wandfluh MD2 valve electronics, CANopen CiA DSP 408 (up to 8 channels)",
       {"amplifier", "controller"},
       [](const devices::DeviceOptions& options, std::string& error) -> std::unique_ptr<devices::Device> {
-        return Md2::create(options, error);
+        return Md2Device::create(options, error);
       },
       [](const std::string& variant) { return eds(variant); },
   };
