@@ -29,6 +29,9 @@ struct DeviceOptions {
   std::map<std::string, std::string> settings;
   std::string store_path;    ///< non-volatile memory file ("" = in memory for the run)
   bool strict_eds = false;   ///< an EDS node: reject the file's CiA 306 deviations (canopen::EdsStrictness)
+  /// Where the product adds its warnings about usable but doubtful settings (a deprecated
+  /// name); nullptr = nobody listens. The caller shows them with the settings' position.
+  std::vector<std::string>* warnings = nullptr;
 };
 
 /// A product's own EMCY code (a manufacturer-specific code, or a standard one its manual gives a
@@ -41,6 +44,7 @@ struct EmcyCode {
 struct FaultInfo {
   std::string name;         ///< e.g. "magnet_lost", "cable_break", "over_temperature"
   std::string description;
+  std::uint16_t emcy = 0;   ///< the EMCY code it raises; 0 = none (an SDO abort, a refusal, silence)
 };
 
 class Device {

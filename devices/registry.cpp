@@ -1,11 +1,12 @@
 #include "devices/registry.h"
 
-// Each product adds one include and one entry below.
-#include "devices/dsv/dsv_product.h"
-#include "devices/md2/md2_product.h"
+// Each product folder has a product.{h,cpp} (devices/product.h); it adds one include and one
+// entry below, in `vplant devices` order.
+#include "devices/dsv/product.h"
+#include "devices/md2/product.h"
 #include "devices/vtvpcd/product.h"
-#include "devices/hlt1100/hlt1100_device.h"
-#include "devices/wdga/wdga_device.h"
+#include "devices/hlt1100/product.h"
+#include "devices/wdga/product.h"
 
 namespace devices {
 

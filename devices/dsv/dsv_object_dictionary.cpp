@@ -91,7 +91,7 @@ void add_characteristic_optimisation(ObjectDictionary& od, std::uint16_t index, 
     auto& e = od.add_entry(index, static_cast<std::uint8_t>(i + 1), subs[i].name, DT::Unsigned16, Access::ReadWrite,
                            subs[i].def);
     limit<std::uint16_t>(e, subs[i].lo, subs[i].hi);
-    if (i >= 3) e.persistent = false;  // the points themselves are stored by the device (Dsv)
+    if (i >= 3) e.persistent = false;  // the points themselves are stored by the device (DsvDevice)
   }
 }
 

@@ -1,6 +1,6 @@
 // The DSV's object dictionary (§5.4): communication area with its two fixed PDOs, node address,
 // bit rate, temperature, device control, strings and the application objects of every control
-// mode (which of them answer depends on 6043h, see Dsv).
+// mode (which of them answer depends on 6043h, see DsvDevice).
 #pragma once
 
 #include <cstdint>

@@ -2,6 +2,7 @@
 
 #include "devices/canopen/eds.h"
 #include "devices/canopen/lss_slave.h"
+#include "devices/settings_reader.h"
 #include "sim/log.h"
 
 namespace devices {
@@ -23,7 +24,7 @@ std::unique_ptr<EdsNode> EdsNode::load(const std::string& eds_path, const Device
     return nullptr;
   }
   if (!options.settings.empty()) {
-    error = "unknown setting '" + options.settings.begin()->first + "' for an EDS node";
+    error = unknown_setting(options.settings.begin()->first, {});  // an EDS node has no settings
     return nullptr;
   }
   canopen::NodePolicy policy;

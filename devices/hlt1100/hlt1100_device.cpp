@@ -1,6 +1,5 @@
 #include "devices/hlt1100/hlt1100_device.h"
 
-#include "devices/canopen/eds.h"
 #include "devices/canopen/lss_slave.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
 #include "devices/hlt1100/hlt1100_scaling.h"
@@ -51,7 +50,7 @@ canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path
   return p;
 }
 
-Device::Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path)
+Hlt1100Device::Hlt1100Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path)
     : settings_(std::move(settings)) {
   node_ = std::make_unique<canopen::Node>("hlt1100", make_object_dictionary(*settings_),
                                           make_policy(*settings_, store_path), node_id);
@@ -65,7 +64,7 @@ Device::Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const s
   node_->set_transition_log(&transition_log_);
 }
 
-std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std::string& error) {
+std::unique_ptr<Hlt1100Device> Hlt1100Device::create(const devices::DeviceOptions& options, std::string& error) {
   if (!options.variant.empty()) {
     error = "the HLT 1100 has no variants";
     return nullptr;
@@ -77,14 +76,14 @@ std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std:
     error = "node-ID " + std::to_string(id) + ": the HLT 1100 takes 1..127 or 255 (unconfigured)";
     return nullptr;
   }
-  return std::unique_ptr<Device>(new Device(std::move(settings), id, options.store_path));
+  return std::unique_ptr<Hlt1100Device>(new Hlt1100Device(std::move(settings), id, options.store_path));
 }
 
-canopen::ValueScaling Device::value_scaling(std::uint16_t index, std::uint8_t sub) {
+canopen::ValueScaling Hlt1100Device::value_scaling(std::uint16_t index, std::uint8_t sub) {
   return hlt1100::value_scaling(node_->od(), index, sub);
 }
 
-sim::PortList Device::ports() {
+sim::PortList Hlt1100Device::ports() {
   auto& in = app_->inputs();
   return {
       {"position", sim::PortDirection::Input, "m", &in.position,
@@ -94,60 +93,29 @@ sim::PortList Device::ports() {
   };
 }
 
-std::vector<devices::FaultInfo> Device::faults() const {
-  return {
-      {"magnet_lost", "no magnet detected: position error (6503h bit 0), EMCY"},
-      {"second_magnet", "a second magnet inside the measuring range: position error"},
-      {"out_of_range", "the magnet reads outside the measuring range: position error"},
-      {"can_error", "CAN-controller error (event on activation): EMCY 0x8100, Operational -> Pre-operational"},
-      {"eeprom_error", "EEPROM defective: save/restore abort, 6503h bit 12, EMCY 0x5000"},
-  };
+// The fault table: what each fault switches in the application, and the EMCY code that follows.
+const devices::FaultEntry<Hlt1100Device> Hlt1100Device::kFaults[] = {
+    {"magnet_lost", 0xFF00, "no magnet detected: position error (6503h bit 0), EMCY",
+     [](Hlt1100Device& d, bool on) { d.app_->inputs().fault_magnet_lost = on; }},
+    {"second_magnet", 0xFF00, "a second magnet inside the measuring range: position error, EMCY",
+     [](Hlt1100Device& d, bool on) { d.app_->inputs().fault_second_magnet = on; }},
+    {"out_of_range", 0xFF00, "the magnet reads outside the measuring range: position error, EMCY",
+     [](Hlt1100Device& d, bool on) { d.app_->inputs().fault_out_of_range = on; }},
+    {"can_error", 0x8100, "CAN-controller error (event on activation): EMCY 0x8100, Operational -> Pre-operational",
+     [](Hlt1100Device& d, bool on) {
+       if (on) d.app_->can_controller_error();
+     }},
+    {"eeprom_error", 0x5000, "EEPROM defective: save/restore abort, 6503h bit 12, EMCY 0x5000",
+     [](Hlt1100Device& d, bool on) { d.app_->set_eeprom_failure(on); }},
+};
+
+std::vector<devices::FaultInfo> Hlt1100Device::faults() const {
+  return devices::fault_infos<Hlt1100Device>(kFaults, *this);
 }
 
-std::string Device::inject_fault(std::string_view name, bool active) {
-  auto& in = app_->inputs();
-  if (name == "magnet_lost") {
-    in.fault_magnet_lost = active;
-  } else if (name == "second_magnet") {
-    in.fault_second_magnet = active;
-  } else if (name == "out_of_range") {
-    in.fault_out_of_range = active;
-  } else if (name == "can_error") {
-    if (active) app_->can_controller_error();
-  } else if (name == "eeprom_error") {
-    app_->set_eeprom_failure(active);
-  } else {
-    return devices::Device::inject_fault(name, active);
-  }
+std::string Hlt1100Device::inject_fault(std::string_view name, bool active) {
+  if (!devices::apply_fault<Hlt1100Device>(kFaults, *this, name, active)) return devices::Device::inject_fault(name, active);
   return {};
-}
-
-std::string eds() {
-  const Settings s;
-  canopen::EdsFileInfo info;
-  info.file_name = "HLT1100-V01-R04.EDS";  // the manual's name pattern HLT1100-VXX-RYY.EDS [M §6.2]
-  info.file_version = 1;
-  info.file_revision = 4;
-  info.description = "HYDAC HLT 1100 magnetostrictive linear position sensor, CiA 406 V3.2 (vplant emulation)";
-  info.vendor_name = "HYDAC ELECTRONIC GMBH";
-  info.product_name = "HLT 1100";
-  info.baud_rates_kbit = {20, 50, 125, 250, 500, 800, 1000};
-  info.lss_supported = true;
-  info.dummy_usage = 0;  // no receive PDOs
-  info.comments = {"Generated by vplant from the emulated object dictionary (default settings).",
-                   "Node-ID and bit rate are set with LSS only."};
-  return canopen::write_eds(make_object_dictionary(s), info);
-}
-
-devices::Product product() {
-  devices::Product p;
-  p.name = "hlt1100";
-  p.description = "HYDAC HLT 1100 magnetostrictive linear position sensor (CiA 406, LSS)";
-  p.make = [](const devices::DeviceOptions& options, std::string& error) -> std::unique_ptr<devices::Device> {
-    return Device::make(options, error);
-  };
-  p.eds = [](const std::string&) { return eds(); };
-  return p;
 }
 
 }  // namespace hlt1100

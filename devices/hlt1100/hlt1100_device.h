@@ -1,5 +1,5 @@
-// The HLT 1100 as a vplant device: node + behaviour + ports to the plant + fault injection, and
-// its registry entry. Ports (SI): position, position2 (m, from the start of the measuring range
+// The HLT 1100 as a vplant device: node + behaviour + ports to the plant + fault injection (its
+// registry entry is product.cpp). Ports (SI): position, position2 (m, from the start of the measuring range
 // at the sensor head), magnet_count (0, 1, 2). Faults: magnet_lost, second_magnet, out_of_range,
 // can_error, eeprom_error.
 #pragma once
@@ -9,19 +9,19 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/fault_table.h"
 #include "devices/hlt1100/hlt1100_emcy_codes.h"
 #include "devices/profiles/cia406/profile_status.h"
 #include "devices/profiles/cia406/status_machines.h"
 #include "devices/hlt1100/hlt1100_application.h"
 #include "devices/hlt1100/hlt1100_settings.h"
-#include "devices/registry.h"
 
 namespace hlt1100 {
 
-class Device final : public devices::Device {
+class Hlt1100Device final : public devices::Device {
  public:
   /// Builds the device; nullptr with `error` set on bad options.
-  static std::unique_ptr<Device> make(const devices::DeviceOptions& options, std::string& error);
+  static std::unique_ptr<Hlt1100Device> create(const devices::DeviceOptions& options, std::string& error);
 
   canopen::Node& node() override { return *node_; }
   sim::PortList ports() override;
@@ -40,18 +40,16 @@ class Device final : public devices::Device {
   const Settings& settings() const { return *settings_; }
 
  private:
-  explicit Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path);
+  explicit Hlt1100Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path);
 
   std::unique_ptr<Settings> settings_;  // stable address: the node's hooks refer to it
   std::unique_ptr<canopen::Node> node_;
   std::unique_ptr<Application> app_;
+  /// Name, EMCY code, what it does, and the action, per fault (the .cpp's table).
+  static const devices::FaultEntry<Hlt1100Device> kFaults[];
 };
 
 /// The node policy the manual implies (abort codes, silent save, LSS services, PDO triggers).
 canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path);
-/// The EDS of the device with its default settings (generated from the emulated dictionary).
-std::string eds();
-/// The registry entry "hlt1100".
-devices::Product product();
 
 }  // namespace hlt1100

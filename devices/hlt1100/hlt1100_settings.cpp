@@ -3,14 +3,14 @@
 #include <cmath>
 
 #include "devices/profiles/cia406/scripted_input.h"
-#include "devices/profiles/cia406/settings_reader.h"
+#include "devices/settings_reader.h"
 
 namespace hlt1100 {
 
 std::int64_t Settings::steps() const { return static_cast<std::int64_t>(std::llround(measuring_length_mm * 10.0)); }
 
 std::string parse_settings(const std::map<std::string, std::string>& text, Settings& s) {
-  cia406::SettingsReader r(text);
+  devices::SettingsReader r(text);
   r.get_uint("product_code", s.product_code, 0, 0xFFFFFFFF);
   r.get_uint("revision", s.revision, 0, 0xFFFFFFFF);
   r.get_uint("serial", s.serial, 0, 0xFFFFFFFF);

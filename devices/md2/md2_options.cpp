@@ -3,9 +3,14 @@
 #include <cmath>
 #include <numbers>
 
-#include "devices/profiles/wandfluh/settings.h"
+#include "devices/settings_reader.h"
 
 namespace md2 {
+
+namespace {
+// Longest unit name or speed-mode list accepted.
+constexpr std::size_t kMaxListText = 64;
+}  // namespace
 
 bool find_unit(const std::string& name, Unit& out) {
   constexpr double kDeg = std::numbers::pi / 180;
@@ -35,50 +40,62 @@ std::string Md2Options::read(const devices::DeviceOptions& options) {
   if (options.node_id > 127) return "node-ID must be 1..127";
   node_id = options.node_id == 0 ? 1 : options.node_id;
 
-  wandfluh::Settings s(options.settings);
+  // The settings table: one line per setting (docs/devices/md2.md, "Settings"). The names the
+  // DSV shares are the DSV's; the MD2's older spellings still work, with a warning.
+  devices::SettingsReader s(options.settings);
+  s.deprecated("nv_control_mode", "control_mode");
+  s.deprecated("dither_freq", "dither_frequency");
   common.read(s);
-  channels = static_cast<int>(s.integer("channels", 8));
-  delivery_control_mode =
-      static_cast<std::int8_t>(s.integer("nv_control_mode", variant == Variant::Amplifier ? 1 : 3));
-  solenoids = static_cast<int>(s.integer("solenoids", 2));
-  i_min_a = s.number("i_min_a", i_min_a);
-  i_max_a = s.number("i_max_a", i_max_a);
-  i_min_b = s.number("i_min_b", i_min_b);
-  i_max_b = s.number("i_max_b", i_max_b);
-  i_limit = s.number("i_limit", i_limit);
-  dither_frequency = s.number("dither_freq", dither_frequency);
-  dither_level = s.number("dither_level", dither_level);
-  dither_sine = s.choice("dither_shape", "square", {"square", "sine"}) == "sine";
-  deadband = s.number("deadband", deadband);
-  ramp_up_ms = s.number("ramp_up_ms", ramp_up_ms);
-  ramp_down_ms = s.number("ramp_down_ms", ramp_down_ms);
-  bus_full_scale = s.number("bus_full_scale", bus_full_scale);
-  const std::string unit_name = s.text("unit", "mm");
-  setpoint_min = s.number("setpoint_min", setpoint_min);
-  p_range = s.number("p_range", p_range);
-  kp = s.number("kp", kp);
-  ki = s.number("ki", ki);
-  kd = s.number("kd", kd);
-  kff = s.number("kff", kff);
-  window = s.number("window", window);
-  window_scaled = s.number("window_scaled", window_scaled);
-  hysteresis = s.number("hysteresis", hysteresis);
-  supply_min = s.number("u_supply_min", supply_min);
-  ambient_temperature = s.number("t_ambient", ambient_temperature);
-  thermal_gain = s.number("k_thermal", thermal_gain);
-  capability = static_cast<std::uint32_t>(s.integer("capability", 0));
-  device_type = static_cast<std::uint32_t>(s.integer("device_type", 0x10000198));
-  vpoc_mapping_literal = s.flag("vpoc_mapping_literal", false);
-  tpdo_actual_value = s.flag("tpdo_actual_value", true);
-  pdo_params_preop_only = s.flag("pdo_params_preop_only", true);
-  identity_revision = static_cast<std::uint32_t>(s.integer("identity_revision", 0));
-  identity_serial = static_cast<std::uint32_t>(s.integer("identity_serial", 0));
-  tpdo255_on_change = s.flag("tpdo255_on_change", false);
-  const std::string speed_list = s.text("speed_modes", "6,7,9");
-  deadband_all_modes = s.choice("deadband_modes", "all", {"all", "open_loop"}) == "all";
+  s.get_integer("channels", channels);
+  delivery_control_mode = variant == Variant::Amplifier ? 1 : 3;
+  s.get_integer("control_mode", delivery_control_mode);
+  s.get_integer("solenoids", solenoids);
+  s.get("i_min_a", i_min_a);
+  s.get("i_max_a", i_max_a);
+  s.get("i_min_b", i_min_b);
+  s.get("i_max_b", i_max_b);
+  s.get("i_limit", i_limit);
+  s.get("dither_frequency", dither_frequency);
+  s.get("dither_level", dither_level);
+  int dither_shape = dither_sine ? 1 : 0;
+  s.choose("dither_shape", dither_shape, {"square", "sine"});
+  dither_sine = dither_shape == 1;
+  s.get("deadband", deadband);
+  s.get("ramp_up_ms", ramp_up_ms);
+  s.get("ramp_down_ms", ramp_down_ms);
+  s.get("bus_full_scale", bus_full_scale);
+  std::string unit_name = unit.name;
+  s.get("unit", unit_name, kMaxListText);
+  s.get("setpoint_min", setpoint_min);
+  s.get("p_range", p_range);
+  s.get("kp", kp);
+  s.get("ki", ki);
+  s.get("kd", kd);
+  s.get("kff", kff);
+  s.get("window", window);
+  s.get("window_scaled", window_scaled);
+  s.get("hysteresis", hysteresis);
+  s.get("u_supply_min", supply_min);
+  s.get("t_ambient", ambient_temperature);
+  s.get("k_thermal", thermal_gain);
+  s.get_integer("capability", capability);
+  s.get_integer("device_type", device_type);
+  s.get("vpoc_mapping_literal", vpoc_mapping_literal);
+  s.get("tpdo_actual_value", tpdo_actual_value);
+  s.get("pdo_params_preop_only", pdo_params_preop_only);
+  s.get_integer("identity_revision", identity_revision);
+  s.get_integer("identity_serial", identity_serial);
+  s.get("tpdo255_on_change", tpdo255_on_change);
+  std::string speed_list = "6,7,9";
+  s.get("speed_modes", speed_list, kMaxListText);
+  int deadband_modes = deadband_all_modes ? 0 : 1;
+  s.choose("deadband_modes", deadband_modes, {"all", "open_loop"});
+  deadband_all_modes = deadband_modes == 0;
   if (!find_unit(unit_name, unit)) return "setting 'unit': unknown unit '" + unit_name + "'";
-  setpoint_max = s.number("setpoint_max", unit.max);
+  setpoint_max = unit.max;  // the default follows the unit
+  s.get("setpoint_max", setpoint_max);
   if (auto e = s.finish(); !e.empty()) return e;
+  if (options.warnings) options.warnings->insert(options.warnings->end(), s.warnings().begin(), s.warnings().end());
 
   speed_modes.clear();
   for (std::size_t pos = 0; pos < speed_list.size();) {

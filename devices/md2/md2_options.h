@@ -29,7 +29,7 @@ struct Md2Options {
   wandfluh::CommonOptions common;
   std::uint8_t node_id = 1;
   int channels = 8;
-  std::int8_t delivery_control_mode = 1;  ///< nv_control_mode: 1 amplifier, 3 controller
+  std::int8_t delivery_control_mode = 1;  ///< control_mode: 1 amplifier, 3 controller
   int solenoids = 2;
   // Current stage (A), dither, dead band, ramps.
   double i_min_a = 0.2, i_max_a = 1.0, i_min_b = 0.2, i_max_b = 1.0;

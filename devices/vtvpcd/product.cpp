@@ -5,7 +5,7 @@
 
 namespace vtvpcd {
 
-std::string eds_text() {
+std::string eds(const std::string& /*variant*/) {
   // The card as shipped: the Bus Manager areas are commissioning data (BODAC, flash), so the
   // EDS's PDO mappings are empty. The emulator's default configuration loads the manual's
   // example areas, as a commissioned card would; a DS-301 mapping cannot describe the example's
@@ -40,7 +40,7 @@ devices::Product product() {
   p.make = [](const devices::DeviceOptions& options, std::string& error) -> std::unique_ptr<devices::Device> {
     return VtvpcdDevice::create(options, error);
   };
-  p.eds = [](const std::string&) { return eds_text(); };
+  p.eds = [](const std::string& variant) { return eds(variant); };
   return p;
 }
 

@@ -3,12 +3,12 @@
 
 #include <string>
 
-#include "devices/registry.h"
+#include "devices/product.h"
 
 namespace vtvpcd {
 
 devices::Product product();
-/// The EDS of the emulated card with its default configuration (what devices/vtvpcd/vtvpcd.eds holds).
-std::string eds_text();
+/// The EDS of the emulated card with its default configuration (what devices/vtvpcd/vtvpcd.eds holds; the card has no variants).
+std::string eds(const std::string& variant = {});
 
 }  // namespace vtvpcd

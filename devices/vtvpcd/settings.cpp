@@ -3,7 +3,9 @@
 #include <charconv>
 #include <cmath>
 #include <functional>
+#include <set>
 
+#include "devices/settings_reader.h"
 #include "devices/vtvpcd/manufacturer_objects.h"
 
 namespace vtvpcd {
@@ -257,9 +259,9 @@ bool Settings::parse(const std::map<std::string, std::string>& in, Settings& out
     for (const auto& k : knobs())
       if (name == k.name) knob = &k;
     if (!knob) {
-      std::string names;
-      for (const auto& k : knobs()) names += (names.empty() ? "" : ", ") + std::string(k.name);
-      error = "unknown setting '" + name + "' for vtvpcd (settings: " + names + ")";
+      std::set<std::string> names;
+      for (const auto& k : knobs()) names.insert(k.name);
+      error = devices::unknown_setting(name, names);
       return false;
     }
     std::string why;

@@ -149,7 +149,7 @@ sim::PortList VtvpcdDevice::ports() {
 
 std::vector<devices::FaultInfo> VtvpcdDevice::faults() const {
   std::vector<devices::FaultInfo> out;
-  for (const auto& d : fault_definitions()) out.push_back({d.name, d.description});
+  for (const auto& d : fault_definitions()) out.push_back({d.name, d.description, d.emcy});
   return out;
 }
 

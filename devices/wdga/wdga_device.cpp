@@ -1,6 +1,5 @@
 #include "devices/wdga/wdga_device.h"
 
-#include "devices/canopen/eds.h"
 #include "devices/canopen/lss_slave.h"
 #include "devices/wdga/wdga_object_dictionary.h"
 #include "devices/wdga/wdga_scaling.h"
@@ -60,7 +59,7 @@ canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path
   return p;
 }
 
-Device::Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path)
+WdgaDevice::WdgaDevice(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path)
     : settings_(std::move(settings)) {
   node_ = std::make_unique<canopen::Node>(settings_->multiturn ? "wdga-mt" : "wdga-st",
                                           make_object_dictionary(*settings_), make_policy(*settings_, store_path),
@@ -73,7 +72,7 @@ Device::Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const s
   node_->set_transition_log(&transition_log_);
 }
 
-std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std::string& error) {
+std::unique_ptr<WdgaDevice> WdgaDevice::create(const devices::DeviceOptions& options, std::string& error) {
   auto settings = std::make_unique<Settings>();
   if (error = parse_settings(options.variant, options.settings, *settings); !error.empty()) return nullptr;
   const std::uint8_t id = options.node_id == 0 ? settings->factory_node_id : options.node_id;
@@ -81,14 +80,14 @@ std::unique_ptr<Device> Device::make(const devices::DeviceOptions& options, std:
     error = "node-ID " + std::to_string(id) + ": the WDGA takes 1..127";
     return nullptr;
   }
-  return std::unique_ptr<Device>(new Device(std::move(settings), id, options.store_path));
+  return std::unique_ptr<WdgaDevice>(new WdgaDevice(std::move(settings), id, options.store_path));
 }
 
-canopen::ValueScaling Device::value_scaling(std::uint16_t index, std::uint8_t sub) {
+canopen::ValueScaling WdgaDevice::value_scaling(std::uint16_t index, std::uint8_t sub) {
   return wdga::value_scaling(settings_->multiturn, node_->od(), index, sub);
 }
 
-sim::PortList Device::ports() {
+sim::PortList WdgaDevice::ports() {
   auto& shaft = app_->measurement().shaft();
   // A multiturn encoder counts turns; a singleturn one reads an angle within one turn.
   const sim::DisplayUnit angle_display = settings_->multiturn ? sim::display::turns : sim::display::degree;
@@ -101,51 +100,47 @@ sim::PortList Device::ports() {
   };
 }
 
-std::vector<devices::FaultInfo> Device::faults() const {
-  return {
-      {"position_error", "sensor fault: 6503h bit 0, 1002h bit 0/1, error register bit 0, 1029h:02"},
-      {"eeprom_error", "EEPROM defective: EMCY 5000h (at start-up and on store), saves abort 0x06060000"},
-      {"can_error_passive", "CAN controller error passive (CRC errors): EMCY 8120h while active"},
-      {"can_bus_warning", "CAN controller bus warning: EMCY 8100h, and 8100h info 01h back to error-active (bus_warning_emcy)"},
-      {"can_overrun", "CAN receive overrun (event on activation): EMCY 8110h"},
-      {"bus_off", "CAN bus-off (on activation): silent until power cycle or the 2103h auto-reset (EMCY 8140h)"},
-      {"temperature_sensor_failure", "temperature read fails: EMCY 4200h info 40h, 6505h bit 14"},
-      {"over_temperature", "the sensor reads 10 degC above the upper limit: EMCY 4200h info 10h"},
-  };
-}
+// The fault table: what each fault switches in the application, and the EMCY code that follows.
+const devices::FaultEntry<WdgaDevice> WdgaDevice::kFaults[] = {
+    {"position_error", 0, "sensor fault: 6503h bit 0, 1002h bit 0/1, error register bit 0, 1029h:02",
+     [](WdgaDevice& d, bool on) { d.app_->set_position_error(on); }},
+    {"eeprom_error", 0x5000, "EEPROM defective: EMCY 5000h (at start-up and on store), saves abort 0x06060000",
+     [](WdgaDevice& d, bool on) { d.app_->set_eeprom_failure(on); }},
+    {"can_error_passive", 0x8120, "CAN controller error passive (CRC errors): EMCY 8120h while active",
+     [](WdgaDevice& d, bool on) { d.app_->set_error_passive(on); }},
+    {"can_bus_warning", 0x8100,
+     "CAN controller bus warning: EMCY 8100h, and 8100h info 01h back to error-active (bus_warning_emcy)",
+     [](WdgaDevice& d, bool on) { d.app_->set_bus_warning(on); }},
+    {"can_overrun", 0x8110, "CAN receive overrun (event on activation): EMCY 8110h",
+     [](WdgaDevice& d, bool on) {
+       if (on) d.app_->receive_overrun();
+     }},
+    {"bus_off", 0x8140, "CAN bus-off (on activation): silent until power cycle or the 2103h auto-reset (EMCY 8140h)",
+     [](WdgaDevice& d, bool on) {
+       if (on) d.app_->go_bus_off();
+     }},
+    {"temperature_sensor_failure", 0x4200, "temperature read fails: EMCY 4200h info 40h, 6505h bit 14",
+     [](WdgaDevice& d, bool on) { d.app_->temperature().read_failure = on; }},
+    {"over_temperature", 0x4200, "the sensor reads 10 degC above the upper limit: EMCY 4200h info 10h",
+     [](WdgaDevice& d, bool on) { d.app_->temperature().over_temperature = on; }},
+};
 
-std::string Device::inject_fault(std::string_view name, bool active) {
-  if (name == "position_error") {
-    app_->set_position_error(active);
-  } else if (name == "eeprom_error") {
-    app_->set_eeprom_failure(active);
-  } else if (name == "can_error_passive") {
-    app_->set_error_passive(active);
-  } else if (name == "can_bus_warning") {
-    app_->set_bus_warning(active);
-  } else if (name == "can_overrun") {
-    if (active) app_->receive_overrun();
-  } else if (name == "bus_off") {
-    if (active) app_->go_bus_off();
-  } else if (name == "temperature_sensor_failure") {
-    app_->temperature().read_failure = active;
-  } else if (name == "over_temperature") {
-    app_->temperature().over_temperature = active;
-  } else {
-    return devices::Device::inject_fault(name, active);
-  }
+std::vector<devices::FaultInfo> WdgaDevice::faults() const { return devices::fault_infos<WdgaDevice>(kFaults, *this); }
+
+std::string WdgaDevice::inject_fault(std::string_view name, bool active) {
+  if (!devices::apply_fault<WdgaDevice>(kFaults, *this, name, active)) return devices::Device::inject_fault(name, active);
   return {};
 }
 
-void Device::power_off() {
+void WdgaDevice::power_off() {
   // The shaft keeps turning and EnDra keeps counting: nothing to remember but the angle input,
   // which the plant (or the speed input) goes on moving.
   node_->power_off();
 }
 
-void Device::power_on(sim::Time now) { node_->power_on(now); }
+void WdgaDevice::power_on(sim::Time now) { node_->power_on(now); }
 
-Led Device::led() const {
+Led WdgaDevice::led() const {
   const auto& n = *node_;
   if (!n.powered()) return Led::Off;
   if (n.bus_off()) return Led::Red;
@@ -158,37 +153,6 @@ Led Device::led() const {
     case canopen::NmtState::PreOperational: return Led::GreenBlinking;
     default: return Led::RedGreenFlicker;
   }
-}
-
-std::string eds(const std::string& variant) {
-  Settings s;
-  (void)parse_settings(variant, {}, s);
-  canopen::EdsFileInfo info;
-  info.file_name = s.multiturn ? "WDGA-MT-CO.eds" : "WDGA-ST-CO.eds";
-  info.file_version = 2;
-  info.file_revision = 8;
-  info.description = std::string("Wachendorff WDGA absolute rotary encoder, ") +
-                     (s.multiturn ? "multiturn (EnDra)" : "singleturn") + ", CiA 406 (vplant emulation)";
-  info.vendor_name = "Wachendorff Automation GmbH & Co. KG";
-  info.product_name = s.multiturn ? "WDGA-MT-CO" : "WDGA-ST-CO";
-  info.baud_rates_kbit = {10, 20, 50, 125, 250, 500, 800, 1000};
-  info.lss_supported = true;
-  info.dummy_usage = 0;  // no receive PDOs, no dummy mapping
-  info.comments = {"Generated by vplant from the emulated object dictionary (default settings).",
-                   "Factory node-ID 127 with automatic bit-rate detection (2100h = 9)."};
-  return canopen::write_eds(make_object_dictionary(s), info);
-}
-
-devices::Product product() {
-  devices::Product p;
-  p.name = "wdga";
-  p.description = "Wachendorff WDGA absolute rotary encoder, EnDra multiturn (CiA 406, LSS, auto bit rate)";
-  p.variants = {"multiturn", "singleturn"};
-  p.make = [](const devices::DeviceOptions& options, std::string& error) -> std::unique_ptr<devices::Device> {
-    return Device::make(options, error);
-  };
-  p.eds = [](const std::string& variant) { return eds(variant); };
-  return p;
 }
 
 }  // namespace wdga

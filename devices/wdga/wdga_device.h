@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/fault_table.h"
 #include "devices/profiles/cia406/profile_status.h"
 #include "devices/profiles/cia406/status_machines.h"
-#include "devices/registry.h"
 #include "devices/wdga/wdga_application.h"
 #include "devices/wdga/wdga_emcy_codes.h"
 #include "devices/wdga/wdga_settings.h"
@@ -22,9 +22,9 @@ namespace wdga {
 /// The status LED (not visible on the bus; CiA 303-3 patterns, manual §3.3).
 enum class Led { Off, RedGreenFlicker, GreenBlinking, GreenSingleFlash, Green, Red };
 
-class Device final : public devices::Device {
+class WdgaDevice final : public devices::Device {
  public:
-  static std::unique_ptr<Device> make(const devices::DeviceOptions& options, std::string& error);
+  static std::unique_ptr<WdgaDevice> create(const devices::DeviceOptions& options, std::string& error);
 
   canopen::Node& node() override { return *node_; }
   sim::PortList ports() override;
@@ -46,16 +46,15 @@ class Device final : public devices::Device {
   Led led() const;
 
  private:
-  Device(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path);
+  WdgaDevice(std::unique_ptr<Settings> settings, std::uint8_t node_id, const std::string& store_path);
 
   std::unique_ptr<Settings> settings_;
   std::unique_ptr<canopen::Node> node_;
   std::unique_ptr<Application> app_;
+  /// Name, EMCY code, what it does, and the action, per fault (the .cpp's table).
+  static const devices::FaultEntry<WdgaDevice> kFaults[];
 };
 
 canopen::NodePolicy make_policy(const Settings& s, const std::string& store_path);
-/// The EDS of a variant ("multiturn", "singleturn"; "" = multiturn) with default settings.
-std::string eds(const std::string& variant);
-devices::Product product();
 
 }  // namespace wdga

@@ -1,7 +1,7 @@
 #include "devices/wdga/wdga_settings.h"
 
 #include "devices/profiles/cia406/scripted_input.h"
-#include "devices/profiles/cia406/settings_reader.h"
+#include "devices/settings_reader.h"
 
 namespace wdga {
 
@@ -13,7 +13,7 @@ std::string parse_settings(const std::string& variant, const std::map<std::strin
   } else {
     return "unknown variant '" + variant + "' (variants: multiturn, singleturn)";
   }
-  cia406::SettingsReader r(text);
+  devices::SettingsReader r(text);
   r.get_uint("revision", s.revision, 0, 0xFFFFFFFF);
   r.get_uint("serial", s.serial, 0, 0xFFFFFFFF);
   r.get("hardware_version", s.hardware_version, 2);

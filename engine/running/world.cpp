@@ -1,5 +1,7 @@
 #include "engine/running/world.h"
 
+#include <cstdio>
+
 #include "devices/canopen/object_dictionary.h"
 #include "devices/canopen/parameter_store.h"
 #include "devices/generic/eds_node.h"
@@ -72,6 +74,8 @@ void World::build_nodes(const Environment& env, bool strict_eds) {
     options.settings = spec.settings;
     options.store_path = spec.store;
     options.strict_eds = strict_eds;
+    std::vector<std::string> warnings;
+    options.warnings = &warnings;
     std::string error;
     if (!spec.store.empty()) {
       // The file is read again at power-on; reading it now turns a bad one into a load error.
@@ -103,6 +107,10 @@ void World::build_nodes(const Environment& env, bool strict_eds) {
       inst.device = product->make(options, error);
     }
     if (!inst.device) throw LoadError(spec.settings.empty() ? spec.mark : spec.settings_mark, "node '" + spec.name + "': " + error);
+    for (const auto& w : warnings) {
+      warnings_.push_back(spec.settings_mark.to_string() + ": warning: node '" + spec.name + "': " + w);
+      std::fprintf(stderr, "%s\n", warnings_.back().c_str());
+    }
 
     inst.bus = bus_index(spec.bus);
     auto& node = inst.device->node();

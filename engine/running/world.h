@@ -53,6 +53,9 @@ class World {
   FrameFieldStore& frame_fields() { return frame_fields_; }
   Random& random() { return random_; }
   bool any_socketcan() const;
+  /// What building found usable but doubtful (a deprecated device setting), as
+  /// "file:line:col: warning: ..." lines; each is also printed to stderr when found.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   /// Binds a signal expression; throws LoadError at the expression's mark.
   Signal resolve(const SignalExpr& e);
@@ -76,6 +79,7 @@ class World {
   Random random_;
   std::vector<std::unique_ptr<sim::Bus>> buses_;
   std::vector<NodeInstance> nodes_;
+  std::vector<std::string> warnings_;
   std::unique_ptr<PlantModel> plant_;
   WireSet plant_to_devices_{&random_};
   WireSet devices_to_plant_{&random_};

@@ -159,7 +159,11 @@ int run_node(const NodeOptions& o) {
   if (!o.eds.empty()) {
     device = devices::EdsNode::load(o.eds, options, error);
   } else if (const auto* product = devices::find_product(o.device)) {
+    std::vector<std::string> warnings;
+    options.warnings = &warnings;
     device = product->make(options, error);
+    for (const auto& w : warnings) std::fprintf(stderr, "vplant node: --setting: warning: %s\n", w.c_str());
+    options.warnings = nullptr;
   } else {
     error = "unknown device '" + o.device + "' (see `vplant devices`)";
   }

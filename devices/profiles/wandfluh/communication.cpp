@@ -1,30 +1,29 @@
 #include "devices/profiles/wandfluh/communication.h"
 
-#include <algorithm>
-
 namespace wandfluh {
 
 using canopen::Access;
 using canopen::DataType;
 using canopen::SdoAbort;
 
-void CommonOptions::read(Settings& s) {
-  error_history_depth = static_cast<std::uint8_t>(std::clamp<std::int64_t>(s.integer("error_history_depth", 254), 1, 254));
-  identity_entries = s.integer("identity_entries", 1) == 4 ? 4 : 1;
-  sdo_server_parameter = s.flag("sdo_server_parameter", false);
-  nmt_fault_from_init = s.flag("nmt_fault_from_init", false);
-  communication_emcy = static_cast<std::uint16_t>(s.integer("life_guard_emcy", 0x8100));
-  save_all_pdo_parameters = s.flag("save_all_pdo_params", false);
-  boot_delay_ms = std::max<std::int64_t>(0, s.integer("boot_delay_ms", 0));
-  rtr_mirror_dlc = s.flag("rtr_mirror_dlc", false);
-  unknown_command_abort = static_cast<std::uint32_t>(s.integer("sdo_unknown_command_abort", 0x08000000));
-  heartbeat_suspends_life_guarding = s.flag("heartbeat_suspends_life_guarding", true);
-  emcy_before_stop = s.flag("emcy_before_stop", false);
-  outputs_need_operational = s.flag("outputs_need_operational", false);
-  device_version = s.text("device_version", device_version);
-  serial_number = s.text("serial_number", serial_number);
-  model_description = s.text("model_description", model_description);
-  vendor_name = s.text("vendor_name", vendor_name);
+void CommonOptions::read(devices::SettingsReader& s) {
+  s.get_uint("error_history_depth", error_history_depth, 1, 254);
+  s.get_uint("identity_entries", identity_entries, 1, 4);
+  identity_entries = identity_entries == 4 ? 4 : 1;
+  s.get("sdo_server_parameter", sdo_server_parameter);
+  s.get("nmt_fault_from_init", nmt_fault_from_init);
+  s.get_uint("life_guard_emcy", communication_emcy, 0, 0xFFFF);
+  s.get("save_all_pdo_params", save_all_pdo_parameters);
+  s.get_int("boot_delay_ms", boot_delay_ms, 0, 3'600'000);
+  s.get("rtr_mirror_dlc", rtr_mirror_dlc);
+  s.get_uint("sdo_unknown_command_abort", unknown_command_abort, 0, 0xFFFFFFFF);
+  s.get("heartbeat_suspends_life_guarding", heartbeat_suspends_life_guarding);
+  s.get("emcy_before_stop", emcy_before_stop);
+  s.get("outputs_need_operational", outputs_need_operational);
+  s.get("device_version", device_version, kMaxText);
+  s.get("serial_number", serial_number, kMaxText);
+  s.get("model_description", model_description, kMaxText);
+  s.get("vendor_name", vendor_name, kMaxText);
 }
 
 canopen::CommunicationProfile communication_profile(std::uint32_t device_type, const CommonOptions& o) {

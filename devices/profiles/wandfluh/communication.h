@@ -16,7 +16,7 @@
 #include "devices/canopen/node_policy.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/canopen/standard_objects.h"
-#include "devices/profiles/wandfluh/settings.h"
+#include "devices/settings_reader.h"
 
 namespace wandfluh {
 
@@ -42,7 +42,10 @@ struct CommonOptions {
   std::string model_description = "Valve type";     ///< model_description
   std::string vendor_name = "Wandfluh AG";          ///< vendor_name
 
-  void read(Settings& s);
+  /// Longest identity string accepted (a VISIBLE_STRING read by SDO segments).
+  static constexpr std::size_t kMaxText = 255;
+
+  void read(devices::SettingsReader& s);
 };
 
 /// 0x1000-0x1018 as both manuals list them.

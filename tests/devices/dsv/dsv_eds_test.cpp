@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "devices/canopen/eds.h"
-#include "devices/dsv/dsv_product.h"
+#include "devices/dsv/product.h"
 #include "tests/support/read_file.h"
 
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "devices/dsv/dsv.h"
+#include "devices/dsv/dsv_device.h"
 #include "tests/support/canopen_harness.h"
 #include "tests/support/temp_path.h"
 
@@ -43,7 +43,7 @@ class DsvTest : public ::testing::Test {
     o.settings = std::move(settings);
     o.store_path = store;
     std::string error;
-    dev = dsv::Dsv::create(o, error);
+    dev = dsv::DsvDevice::create(o, error);
     ASSERT_TRUE(dev) << error;
     h = std::make_unique<vtest::CanopenHarness>(dev->node());
     h->power_on();
@@ -89,7 +89,7 @@ class DsvTest : public ::testing::Test {
   /// Imin + (Imax − Imin)·a in A for the default valve (2731 / 8192 counts, 24 V).
   static double amps(double a) { return (2731 + (8192 - 2731) * a) * 1.536 / 16384; }
 
-  std::unique_ptr<dsv::Dsv> dev;
+  std::unique_ptr<dsv::DsvDevice> dev;
   std::unique_ptr<vtest::CanopenHarness> h;
   Frames boot;
 };

@@ -132,13 +132,13 @@ TEST_F(DsvTest, SettingsAreValidated) {
     devices::DeviceOptions o;
     o.settings[name] = value;
     std::string error;
-    EXPECT_FALSE(dsv::Dsv::create(o, error)) << name;
+    EXPECT_FALSE(dsv::DsvDevice::create(o, error)) << name;
     EXPECT_FALSE(error.empty());
   }
   devices::DeviceOptions o;
   o.settings["control_mode"] = "4";  // controller mode on the amplifier
   std::string error;
-  EXPECT_FALSE(dsv::Dsv::create(o, error));
+  EXPECT_FALSE(dsv::DsvDevice::create(o, error));
 }
 
 TEST_F(DsvTest, SettingOutputsNeedOperational) {

@@ -445,7 +445,7 @@ TEST(EdsNodeLoad, OptionsAnEdsNodeDoesNotHave) {
   options.variant.clear();
   options.settings["knob"] = "1";
   EXPECT_FALSE(devices::EdsNode::load(kFixture, options, error));
-  EXPECT_EQ(error, "unknown setting 'knob' for an EDS node");
+  EXPECT_EQ(error, "unknown setting 'knob' (no settings)");
 }
 
 TEST(EdsNodeLoad, DefaultNodeIdAndLssFromTheFile) {

@@ -8,6 +8,8 @@
 
 #include "devices/canopen/eds.h"
 #include "devices/hlt1100/hlt1100_device.h"
+#include "devices/hlt1100/product.h"
+#include "devices/registry.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
 #include "tests/support/canopen_harness.h"
 #include "tests/support/read_file.h"

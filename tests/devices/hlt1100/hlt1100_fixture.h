@@ -36,7 +36,7 @@ class Hlt1100Test : public ::testing::Test {
     o.settings = std::move(settings);
     o.store_path = store_path_;
     std::string error;
-    device_ = Device::make(o, error);
+    device_ = Hlt1100Device::create(o, error);
     EXPECT_TRUE(device_) << error;
     h_ = std::make_unique<vtest::CanopenHarness>(device_->node());
     magnet_mm(100.0);
@@ -47,7 +47,7 @@ class Hlt1100Test : public ::testing::Test {
   }
 
   vtest::CanopenHarness& h() { return *h_; }
-  Device& device() { return *device_; }
+  Hlt1100Device& device() { return *device_; }
   canopen::ObjectDictionary& od() { return device_->node().od(); }
   void magnet_mm(double mm) { device_->set_input("position", mm / 1000.0); }
   void power_cycle() {
@@ -80,7 +80,7 @@ class Hlt1100Test : public ::testing::Test {
   static Frame emcy(std::initializer_list<std::uint8_t> bytes) { return Frame(0x85, eight(bytes)); }
 
   vtest::TempPath store_path_{"vplant-hlt1100-test"};  // removed with the fixture
-  std::unique_ptr<Device> device_;
+  std::unique_ptr<Hlt1100Device> device_;
   std::unique_ptr<vtest::CanopenHarness> h_;
 };
 

@@ -41,7 +41,7 @@ TEST_P(PositionProperty, OutputEqualsTheFormula) {
   const vtest::TempPath store("vplant-hlt1100-property");  // removed also when an assertion fails
   o.store_path = store;
   std::string error;
-  auto device = Device::make(o, error);
+  auto device = Hlt1100Device::create(o, error);
   ASSERT_TRUE(device) << error;
   vtest::CanopenHarness h(device->node());
   std::uniform_real_distribution<double> where(0.0, length_mm - 0.051);

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "devices/canopen/eds.h"
-#include "devices/md2/md2_product.h"
+#include "devices/md2/product.h"
 #include "tests/support/read_file.h"
 
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "devices/canopen/emergency.h"
-#include "devices/md2/md2.h"
+#include "devices/md2/md2_device.h"
 #include "tests/support/canopen_harness.h"
 
 namespace md2test {
@@ -27,7 +27,7 @@ class Md2Test : public ::testing::Test {
     o.settings = std::move(settings);
     o.store_path = store;
     std::string error;
-    dev = md2::Md2::create(o, error);
+    dev = md2::Md2Device::create(o, error);
     ASSERT_TRUE(dev) << error;
     h = std::make_unique<vtest::CanopenHarness>(dev->node());
     h->power_on();
@@ -64,7 +64,7 @@ class Md2Test : public ::testing::Test {
   }
   md2::Md2Channel& ch(int c = 1) { return dev->md2_channel(c); }
 
-  std::unique_ptr<md2::Md2> dev;
+  std::unique_ptr<md2::Md2Device> dev;
   std::unique_ptr<vtest::CanopenHarness> h;
   Frames boot;
 };

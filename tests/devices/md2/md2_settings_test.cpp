@@ -15,10 +15,10 @@ TEST_F(Md2Test, SettingVpocMappingLiteral) {
 }
 
 TEST_F(Md2Test, SettingTpdoActualValueAndDeviceType) {
-  make({{"nv_control_mode", "4"}, {"tpdo_actual_value", "false"}, {"device_type", "0x80000198"}}, "controller");
+  make({{"control_mode", "4"}, {"tpdo_actual_value", "false"}, {"device_type", "0x80000198"}}, "controller");
   EXPECT_EQ(read(0x1A00, 0), 1u);
   EXPECT_EQ(read(0x1000), 0x80000198u);
-  make({{"nv_control_mode", "4"}}, "controller");
+  make({{"control_mode", "4"}}, "controller");
   EXPECT_EQ(read(0x1A00, 0), 2u);
   EXPECT_EQ(read(0x1A00, 2), 0x63810110u);
 }
@@ -122,16 +122,16 @@ TEST_F(Md2Test, SettingsAreValidated) {
     devices::DeviceOptions o;
     o.settings[name] = value;
     std::string error;
-    EXPECT_FALSE(md2::Md2::create(o, error)) << name;
+    EXPECT_FALSE(md2::Md2Device::create(o, error)) << name;
     EXPECT_FALSE(error.empty());
   }
   devices::DeviceOptions o;
   o.variant = "pump";
   std::string error;
-  EXPECT_FALSE(md2::Md2::create(o, error));
+  EXPECT_FALSE(md2::Md2Device::create(o, error));
   o.variant = "";
-  o.settings["nv_control_mode"] = "9";  // the amplifier has no mode 9
-  EXPECT_FALSE(md2::Md2::create(o, error));
+  o.settings["control_mode"] = "9";  // the amplifier has no mode 9
+  EXPECT_FALSE(md2::Md2Device::create(o, error));
 }
 
 TEST_F(Md2Test, PortsAndFaultNames) {

@@ -87,8 +87,45 @@ TEST_F(Md2ChainTest, RampDownAndThroughZeroWithinOneCycle) {
   EXPECT_EQ(status(), 0x000F);
 }
 
+// The MD2 shares the DSV's setting names; its older spellings (dither_freq, nv_control_mode) still
+// work, with a warning naming the new one, and give the same device.
+TEST_F(Md2ChainTest, DeprecatedSettingNamesGiveTheSameDeviceWithAWarning) {
+  const auto run = [this](std::map<std::string, std::string> settings, const std::string& variant) {
+    settings["dither_level"] = "0.05";
+    make(settings, variant);
+    active();
+    command(8192);
+    std::vector<double> samples;
+    for (int i = 0; i < 60; ++i) {
+      h->run_ticks(1);
+      samples.push_back(ch().solenoid_a);
+    }
+    samples.push_back(read(0x6043));  // the delivered control mode
+    return samples;
+  };
+  const auto dither = run({{"dither_frequency", "50"}}, "");
+  EXPECT_EQ(run({{"dither_freq", "50"}}, ""), dither);
+  EXPECT_NE(run({{"dither_frequency", "100"}}, ""), dither);  // the knob matters
+  const auto mode = run({{"control_mode", "4"}}, "controller");
+  EXPECT_EQ(run({{"nv_control_mode", "4"}}, "controller"), mode);
+  EXPECT_EQ(mode.back(), 4);  // the delivered mode, not the controller's default 3
+
+  devices::DeviceOptions o;
+  o.variant = "controller";
+  o.settings = {{"dither_freq", "50"}, {"nv_control_mode", "4"}};
+  std::vector<std::string> warnings;
+  o.warnings = &warnings;
+  std::string error;
+  ASSERT_TRUE(md2::Md2Device::create(o, error)) << error;
+  EXPECT_EQ(warnings, (std::vector<std::string>{"setting 'nv_control_mode' is deprecated: use 'control_mode'",
+                                                "setting 'dither_freq' is deprecated: use 'dither_frequency'"}));
+  o.settings["control_mode"] = "4";  // both spellings of one setting
+  EXPECT_FALSE(md2::Md2Device::create(o, error));
+  EXPECT_EQ(error, "setting 'nv_control_mode' is the deprecated name of 'control_mode': give only 'control_mode'");
+}
+
 TEST_F(Md2ChainTest, DitherAmplitudeAndFrequencyInTheCurrent) {
-  make({{"dither_freq", "100"}, {"dither_level", "0.05"}});  // 5 % of Imax peak-to-peak = 50 mA
+  make({{"dither_frequency", "100"}, {"dither_level", "0.05"}});  // 5 % of Imax peak-to-peak = 50 mA
   active();
   command(8192);  // DC 0.6 A
   std::vector<double> samples;

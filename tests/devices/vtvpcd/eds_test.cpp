@@ -22,7 +22,7 @@ std::string committed() {
 }  // namespace
 
 TEST(VtvpcdEds, CommittedFileEqualsTheGeneratedOne) {
-  const std::string text = vtvpcd::eds_text();
+  const std::string text = vtvpcd::eds();
   EXPECT_EQ(committed(), text) << "regenerate with: vplant eds vtvpcd -o devices/vtvpcd/vtvpcd.eds";
   EXPECT_EQ(vtvpcd::product().eds(""), text);
 }

@@ -7,6 +7,8 @@
 
 #include "devices/canopen/eds.h"
 #include "devices/wdga/wdga_device.h"
+#include "devices/wdga/product.h"
+#include "devices/registry.h"
 #include "devices/wdga/wdga_object_dictionary.h"
 #include "tests/support/read_file.h"
 

@@ -67,7 +67,7 @@ TEST_P(WdgaPositionProperty, OutputEqualsTheFormula) {
   const vtest::TempPath store("vplant-wdga-property");  // removed also when an assertion fails
   o.store_path = store;
   std::string error;
-  auto device = Device::make(o, error);
+  auto device = WdgaDevice::create(o, error);
   ASSERT_TRUE(device) << error;
   vtest::CanopenHarness h(device->node());
   Model m;

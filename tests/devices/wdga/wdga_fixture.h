@@ -39,7 +39,7 @@ class WdgaTest : public ::testing::Test {
     o.settings = std::move(settings);
     o.store_path = store_path_;
     std::string error;
-    device_ = Device::make(o, error);
+    device_ = WdgaDevice::create(o, error);
     EXPECT_TRUE(device_) << error;
     h_ = std::make_unique<vtest::CanopenHarness>(device_->node());
     if (boot_now) boot();
@@ -59,7 +59,7 @@ class WdgaTest : public ::testing::Test {
     boot();
   }
   vtest::CanopenHarness& h() { return *h_; }
-  Device& device() { return *device_; }
+  WdgaDevice& device() { return *device_; }
   canopen::ObjectDictionary& od() { return device_->node().od(); }
   std::uint8_t id() { return device_->node().node_id(); }
   /// Sets the shaft angle in revolutions (clockwise positive).
@@ -84,7 +84,7 @@ class WdgaTest : public ::testing::Test {
   Frame resp(std::initializer_list<std::uint8_t> bytes) { return Frame(0x580u + id(), eight(bytes)); }
 
   vtest::TempPath store_path_{"vplant-wdga-test"};  // removed with the fixture
-  std::unique_ptr<Device> device_;
+  std::unique_ptr<WdgaDevice> device_;
   std::unique_ptr<vtest::CanopenHarness> h_;
 };
 

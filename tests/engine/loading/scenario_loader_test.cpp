@@ -5,6 +5,7 @@
 #include "engine/loading/frame_pattern.h"
 #include "engine/loading/scenario_loader.h"
 #include "engine/loading/signal_expression.h"
+#include "engine/running/world.h"
 
 using namespace scenario;
 
@@ -248,4 +249,21 @@ TEST(ScenarioLoader, DeepNestingIsReportedAsNesting) {
     EXPECT_EQ(message.rfind("deep.yaml:", 0), 0u) << message;
     EXPECT_NE(message.find(": nesting deeper than "), std::string::npos) << message;
   }
+}
+
+// A deprecated device setting still builds the node; the warning names the new spelling at the
+// settings' position (vplant run prints it on stderr).
+TEST(ScenarioLoader, ADeprecatedDeviceSettingIsAWarningAtItsLine) {
+  const auto s = parse_scenario(R"(
+name: old names
+nodes:
+  - name: valve
+    device: md2
+    settings: {dither_freq: "50"}
+clock: {duration: 1s}
+)",
+                                "old.yaml", ".");
+  World world(s, default_environment(), {}, 1);
+  EXPECT_EQ(world.warnings(),
+            std::vector<std::string>{"old.yaml:6:15: warning: node 'valve': setting 'dither_freq' is deprecated: use 'dither_frequency'"});
 }

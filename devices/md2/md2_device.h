@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/fault_table.h"
 #include "devices/md2/md2_channel.h"
 #include "devices/md2/md2_emcy_codes.h"
 #include "devices/md2/md2_options.h"
@@ -29,10 +30,10 @@
 
 namespace md2 {
 
-class Md2 final : public devices::Device, private wandfluh::ValveApplication {
+class Md2Device final : public devices::Device, private wandfluh::ValveApplication {
  public:
   /// Builds an MD2; nullptr with `error` set on bad options.
-  static std::unique_ptr<Md2> create(const devices::DeviceOptions& options, std::string& error);
+  static std::unique_ptr<Md2Device> create(const devices::DeviceOptions& options, std::string& error);
 
   canopen::Node& node() override { return *node_owner_; }
   sim::PortList ports() override;
@@ -55,7 +56,7 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
   double temperature() const { return temperature_; }
 
  private:
-  Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options);
+  Md2Device(std::unique_ptr<canopen::Node> node, const Md2Options& options);
 
   // wandfluh::ValveApplication
   int channel_count() const override { return static_cast<int>(channels_.size()); }
@@ -83,6 +84,9 @@ class Md2 final : public devices::Device, private wandfluh::ValveApplication {
     bool supply_low = false, analog_signal_lost = false, general_error = false;
     bool storage_failure = false, paso_control = false;
   } faults_;
+  /// Name, EMCY code, what it does, and the condition it sets, per fault (the .cpp's table).
+  static const devices::FaultEntry<Md2Device> kFaults[];
+  static bool has_solenoid_b(const Md2Device& d) { return d.options_.solenoids == 2; }
   std::uint64_t conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on
 };
 

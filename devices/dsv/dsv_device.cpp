@@ -1,4 +1,4 @@
-#include "devices/dsv/dsv.h"
+#include "devices/dsv/dsv_device.h"
 
 #include <array>
 #include <bit>
@@ -34,7 +34,7 @@ std::uint32_t mapping_entry(std::uint16_t index, std::uint8_t sub, std::uint8_t 
 }
 }  // namespace
 
-std::unique_ptr<Dsv> Dsv::create(const devices::DeviceOptions& options, std::string& error) {
+std::unique_ptr<DsvDevice> DsvDevice::create(const devices::DeviceOptions& options, std::string& error) {
   DsvOptions o;
   error = o.read(options);
   if (!error.empty()) return nullptr;
@@ -44,10 +44,10 @@ std::unique_ptr<Dsv> Dsv::create(const devices::DeviceOptions& options, std::str
   }
   auto node = std::make_unique<canopen::Node>("dsv", build_object_dictionary(o),
                                               wandfluh::node_policy(o.common, options.store_path), o.node_id);
-  return std::unique_ptr<Dsv>(new Dsv(std::move(node), o));
+  return std::unique_ptr<DsvDevice>(new DsvDevice(std::move(node), o));
 }
 
-Dsv::Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
+DsvDevice::DsvDevice(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
     : ValveApplication(*node, options.common), options_(options), node_owner_(std::move(node)) {
   auto& n = *node_owner_;
   auto& pdo = n.policy().pdo;
@@ -82,7 +82,7 @@ Dsv::Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options)
   n.set_transition_log(&transition_log_);
 }
 
-void Dsv::install_device_hooks() {
+void DsvDevice::install_device_hooks() {
   auto& od = node_owner_->od();
   // Objects of other control modes do not exist for the bus (§5.3: "depending on the Device
   // control mode only the appropriate objects are accessible"), from the moment 6043h changes.
@@ -193,12 +193,12 @@ void Dsv::install_device_hooks() {
   }
 }
 
-void Dsv::power_on(sim::Time now) {
+void DsvDevice::power_on(sim::Time now) {
   curve_restore_pending_ = false;  // a power cycle discards a pending restore
   node_owner_->power_on(now);
 }
 
-void Dsv::reset_model() {
+void DsvDevice::reset_model() {
   conditions_passed_ = kNoConditionsPassed;  // the errors were cleared: detect afresh
   chain_->reset();
   open_a_detected_ = open_b_detected_ = false;
@@ -212,17 +212,17 @@ void Dsv::reset_model() {
   control_->dsm().set_active_allowed(parameters_->control_mode() != 0);
 }
 
-void Dsv::restore_mapping_entry() {
+void DsvDevice::restore_mapping_entry() {
   if (mapping_mode_ == mode::kVprcClosed) dsp408::put(*node_owner_->od().entry(0x1A01, 2), tpdo2_internal_);
 }
 
-void Dsv::restore_alias_entry() {
+void DsvDevice::restore_alias_entry() {
   if (!alias_saved_) return;
   node_owner_->od().entry(kAlias, 1)->value = *alias_saved_;
   alias_saved_.reset();
 }
 
-void Dsv::regenerate_pdos() {
+void DsvDevice::regenerate_pdos() {
   // The mapping follows 6043h/2042h at every reset (§5.4.21 note, §5.4.16/18).
   auto& od = node_owner_->od();
   const std::int8_t m = parameters_->control_mode();
@@ -254,13 +254,13 @@ void Dsv::regenerate_pdos() {
   pdo.reload();
 }
 
-void Dsv::on_rpdo(int pdo_number) {
+void DsvDevice::on_rpdo(int pdo_number) {
   if (pdo_number != active_rpdo_) return;
   const auto type = node_owner_->od().get<std::uint8_t>(static_cast<std::uint16_t>(0x1800 + active_tpdo_ - 1), 2);
   if (type == 255) node_owner_->pdo().request_tpdo(active_tpdo_);
 }
 
-void Dsv::detect_errors() {
+void DsvDevice::detect_errors() {
   auto& e = errors();
   // An open circuit shows only while the solenoid is driven; once seen it stays present until
   // the wire is whole again (a fault reset meanwhile is refused).
@@ -288,7 +288,7 @@ void Dsv::detect_errors() {
   e.set_condition(kEeprom, kRegGeneric, eeprom);
 }
 
-void Dsv::process(sim::Time now, sim::Duration dt) {
+void DsvDevice::process(sim::Time now, sim::Duration dt) {
   const bool enable = enable_input_ >= 0.5;
   if (control_->dsm().enable_input() != enable) control_->dsm().set_enable_input(enable);
   input_->sample(actual_value_, actual_cable_break_ >= 0.5 || faults_.actual_cable_break);
@@ -305,11 +305,11 @@ void Dsv::process(sim::Time now, sim::Duration dt) {
   restore_alias_entry();
 }
 
-canopen::ValueScaling Dsv::value_scaling(std::uint16_t index, std::uint8_t sub) {
+canopen::ValueScaling DsvDevice::value_scaling(std::uint16_t index, std::uint8_t sub) {
   return dsv::value_scaling(options_, index, sub);
 }
 
-sim::PortList Dsv::ports() {
+sim::PortList DsvDevice::ports() {
   return {
       {"solenoid_a_current", sim::PortDirection::Output, "A", &solenoid_a_, "solenoid A current", sim::display::mA},
       {"solenoid_b_current", sim::PortDirection::Output, "A", &solenoid_b_, "solenoid B current", sim::display::mA},
@@ -322,53 +322,47 @@ sim::PortList Dsv::ports() {
   };
 }
 
-std::string Dsv::set_input(std::string_view name, double value) {
+std::string DsvDevice::set_input(std::string_view name, double value) {
   if (name == "actual") name = "actual_value";
   return Device::set_input(name, value);
 }
 
-std::vector<devices::FaultInfo> Dsv::faults() const {
-  std::vector<devices::FaultInfo> f = {
-      {"solenoid_a_open", "solenoid A cable break: EMCY 0x5411 when A is driven, FAULT, no current on A"},
-      {"solenoid_a_short", "solenoid A short circuit: EMCY 0x5411, FAULT"},
-  };
-  if (options_.solenoids == 2) {
-    f.push_back({"solenoid_b_open", "solenoid B cable break: EMCY 0x5412 when B is driven, FAULT, no current on B"});
-    f.push_back({"solenoid_b_short", "solenoid B short circuit: EMCY 0x5412, FAULT"});
-  }
-  f.push_back({"over_current", "output current too high: EMCY 0x2300, FAULT"});
-  f.push_back({"supply_low", "supply voltage too low: EMCY 0x3412, FAULT"});
-  f.push_back({"actual_cable_break", "actual-value wire broken (signal 0): EMCY 0x3422 with 2201h = 1 and 4..20 mA"});
-  f.push_back({"general_error", "general internal error: EMCY 0x1000, FAULT"});
-  f.push_back({"memory_failure", "non-volatile memory fails: 0x1010/0x1011 abort 0x06060000 and EMCY 0x5520"});
-  f.push_back({"resolution_update_failure", "profile data not updated after a resolution change: EMCY 0x5510"});
-  f.push_back({"paso_control", "the PASO tool holds control: bus control refused (0x08000021)"});
-  return f;
-}
+// The fault table: what each fault sets for detect_errors(), and the EMCY code that follows.
+const devices::FaultEntry<DsvDevice> DsvDevice::kFaults[] = {
+    {"solenoid_a_open", 0x5411, "solenoid A cable break: EMCY 0x5411 when A is driven, FAULT, no current on A",
+     [](DsvDevice& d, bool on) { d.faults_.solenoid_a_open = on; }},
+    {"solenoid_a_short", 0x5411, "solenoid A short circuit: EMCY 0x5411, FAULT",
+     [](DsvDevice& d, bool on) { d.faults_.solenoid_a_short = on; }},
+    {"solenoid_b_open", 0x5412, "solenoid B cable break: EMCY 0x5412 when B is driven, FAULT, no current on B",
+     [](DsvDevice& d, bool on) { d.faults_.solenoid_b_open = on; }, &DsvDevice::has_solenoid_b},
+    {"solenoid_b_short", 0x5412, "solenoid B short circuit: EMCY 0x5412, FAULT",
+     [](DsvDevice& d, bool on) { d.faults_.solenoid_b_short = on; }, &DsvDevice::has_solenoid_b},
+    {"over_current", 0x2300, "output current too high: EMCY 0x2300, FAULT",
+     [](DsvDevice& d, bool on) { d.faults_.over_current = on; }},
+    {"supply_low", 0x3412, "supply voltage too low: EMCY 0x3412, FAULT",
+     [](DsvDevice& d, bool on) { d.faults_.supply_low = on; }},
+    {"actual_cable_break", 0x3422, "actual-value wire broken (signal 0): EMCY 0x3422 with 2201h = 1 and 4..20 mA",
+     [](DsvDevice& d, bool on) { d.faults_.actual_cable_break = on; }},
+    {"general_error", 0x1000, "general internal error: EMCY 0x1000, FAULT",
+     [](DsvDevice& d, bool on) { d.faults_.general_error = on; }},
+    {"memory_failure", 0x5520, "non-volatile memory fails: 0x1010/0x1011 abort 0x06060000 and EMCY 0x5520",
+     [](DsvDevice& d, bool on) {
+       d.faults_.memory_failure = on;
+       d.node_owner_->store().set_failing(on);
+     }},
+    {"resolution_update_failure", 0x5510, "profile data not updated after a resolution change: EMCY 0x5510",
+     [](DsvDevice& d, bool on) { d.faults_.resolution_update_failure = on; }},
+    {"paso_control", 0, "the PASO tool holds control: bus control refused (0x08000021)",
+     [](DsvDevice& d, bool on) {
+       d.faults_.paso_control = on;
+       d.control_->set_paso_control(on);
+     }},
+};
 
-std::string Dsv::inject_fault(std::string_view name, bool active) {
-  bool* flag = nullptr;
-  if (name == "solenoid_a_open") flag = &faults_.solenoid_a_open;
-  if (name == "solenoid_a_short") flag = &faults_.solenoid_a_short;
-  if (options_.solenoids == 2 && name == "solenoid_b_open") flag = &faults_.solenoid_b_open;
-  if (options_.solenoids == 2 && name == "solenoid_b_short") flag = &faults_.solenoid_b_short;
-  if (name == "over_current") flag = &faults_.over_current;
-  if (name == "supply_low") flag = &faults_.supply_low;
-  if (name == "actual_cable_break") flag = &faults_.actual_cable_break;
-  if (name == "general_error") flag = &faults_.general_error;
-  if (name == "resolution_update_failure") flag = &faults_.resolution_update_failure;
-  if (name == "memory_failure") {
-    faults_.memory_failure = active;
-    node_owner_->store().set_failing(active);
-    return {};
-  }
-  if (name == "paso_control") {
-    faults_.paso_control = active;
-    control_->set_paso_control(active);
-    return {};
-  }
-  if (!flag) return Device::inject_fault(name, active);
-  *flag = active;
+std::vector<devices::FaultInfo> DsvDevice::faults() const { return devices::fault_infos<DsvDevice>(kFaults, *this); }
+
+std::string DsvDevice::inject_fault(std::string_view name, bool active) {
+  if (!devices::apply_fault<DsvDevice>(kFaults, *this, name, active)) return Device::inject_fault(name, active);
   return {};
 }
 

@@ -1,4 +1,4 @@
-#include "devices/md2/md2.h"
+#include "devices/md2/md2_device.h"
 
 #include <array>
 #include <bit>
@@ -18,20 +18,20 @@ constexpr std::uint16_t kGeneral = 0x1000, kSolenoid1 = 0x2311, kSolenoid2 = 0x2
 constexpr std::uint8_t kRegGeneric = 0x01, kRegCurrent = 0x03, kRegVoltage = 0x05;
 }  // namespace
 
-std::unique_ptr<Md2> Md2::create(const devices::DeviceOptions& options, std::string& error) {
+std::unique_ptr<Md2Device> Md2Device::create(const devices::DeviceOptions& options, std::string& error) {
   Md2Options o;
   error = o.read(options);
   if (!error.empty()) return nullptr;
   if (!mode_supported(o.variant, o.delivery_control_mode)) {
-    error = "setting 'nv_control_mode': mode " + std::to_string(o.delivery_control_mode) + " is not available on this variant";
+    error = "setting 'control_mode': mode " + std::to_string(o.delivery_control_mode) + " is not available on this variant";
     return nullptr;
   }
   auto node = std::make_unique<canopen::Node>("md2", build_object_dictionary(o),
                                               wandfluh::node_policy(o.common, options.store_path), o.node_id);
-  return std::unique_ptr<Md2>(new Md2(std::move(node), o));
+  return std::unique_ptr<Md2Device>(new Md2Device(std::move(node), o));
 }
 
-Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
+Md2Device::Md2Device(std::unique_ptr<canopen::Node> node, const Md2Options& options)
     : ValveApplication(*node, options.common), options_(options), node_owner_(std::move(node)) {
   auto& n = *node_owner_;
   auto& policy = n.policy().pdo;
@@ -65,13 +65,13 @@ Md2::Md2(std::unique_ptr<canopen::Node> node, const Md2Options& options)
   n.set_transition_log(&transition_log_);
 }
 
-void Md2::reset_model() {
+void Md2Device::reset_model() {
   conditions_passed_ = kNoConditionsPassed;  // the errors were cleared: detect afresh
   for (auto& ch : channels_) ch->reset_model();
   temperature_ = options_.ambient_temperature;
 }
 
-void Md2::regenerate_pdos() {
+void Md2Device::regenerate_pdos() {
   // "If the control mode has changed, the PDOs must be mapped new. This will be done
   // automatically after a reset" (§5.4.26): PDO n follows channel n's control mode.
   auto& od = node_owner_->od();
@@ -90,7 +90,7 @@ void Md2::regenerate_pdos() {
   node_owner_->pdo().reload();
 }
 
-void Md2::detect_errors() {
+void Md2Device::detect_errors() {
   const bool solenoid_1 = faults_.solenoid_a_open || faults_.solenoid_a_short;
   const bool solenoid_2 = options_.solenoids == 2 && (faults_.solenoid_b_open || faults_.solenoid_b_short);
   const bool supply_low = faults_.supply_low || supply_voltage_ < options_.supply_min;
@@ -110,7 +110,7 @@ void Md2::detect_errors() {
   e.set_condition(kGeneral, kRegGeneric, general);
 }
 
-void Md2::process(sim::Time now, sim::Duration dt) {
+void Md2Device::process(sim::Time now, sim::Duration dt) {
   const bool enable = enable_input_ >= 0.5;
   for (auto& ch : channels_) {
     if (ch->control().dsm().enable_input() != enable) ch->control().dsm().set_enable_input(enable);
@@ -130,7 +130,7 @@ void Md2::process(sim::Time now, sim::Duration dt) {
   temperature_out_.put(temperature_);
 }
 
-sim::PortList Md2::ports() {
+sim::PortList Md2Device::ports() {
   sim::PortList p;
   for (auto& ch : channels_) {
     const std::string c = "ch" + std::to_string(ch->number()) + ".";
@@ -149,50 +149,45 @@ sim::PortList Md2::ports() {
   return p;
 }
 
-std::string Md2::set_input(std::string_view name, double value) {
+std::string Md2Device::set_input(std::string_view name, double value) {
   if (name == "actual") name = "ch1.actual_value";
   return Device::set_input(name, value);
 }
 
-std::vector<devices::FaultInfo> Md2::faults() const {
-  std::vector<devices::FaultInfo> f = {
-      {"solenoid_a_open", "solenoid driver 1 cable break: EMCY 0x2311, FAULT, no current on A"},
-      {"solenoid_a_short", "solenoid driver 1 short circuit: EMCY 0x2311, FAULT"},
-  };
-  if (options_.solenoids == 2) {
-    f.push_back({"solenoid_b_open", "solenoid driver 2 cable break: EMCY 0x2312, FAULT, no current on B"});
-    f.push_back({"solenoid_b_short", "solenoid driver 2 short circuit: EMCY 0x2312, FAULT"});
-  }
-  f.push_back({"supply_low", "supply voltage too low: EMCY 0x3412, FAULT"});
-  f.push_back({"analog_signal_lost", "analog command/feedback below minimum or cable break: EMCY 0x3422 while the "
-                                     "analog input is in use (0x6042 = 2 or 0x2200 = 2)"});
-  f.push_back({"general_error", "general internal error: EMCY 0x1000, FAULT"});
-  f.push_back({"storage_failure", "non-volatile memory fails: 0x1010/0x1011 abort with 0x06060000"});
-  f.push_back({"paso_control", "the PASO tool holds control: bus control words refused (0x08000021)"});
-  return f;
-}
+// The fault table: what each fault sets for detect_errors(), and the EMCY code that follows.
+const devices::FaultEntry<Md2Device> Md2Device::kFaults[] = {
+    {"solenoid_a_open", 0x2311, "solenoid driver 1 cable break: EMCY 0x2311, FAULT, no current on A",
+     [](Md2Device& d, bool on) { d.faults_.solenoid_a_open = on; }},
+    {"solenoid_a_short", 0x2311, "solenoid driver 1 short circuit: EMCY 0x2311, FAULT",
+     [](Md2Device& d, bool on) { d.faults_.solenoid_a_short = on; }},
+    {"solenoid_b_open", 0x2312, "solenoid driver 2 cable break: EMCY 0x2312, FAULT, no current on B",
+     [](Md2Device& d, bool on) { d.faults_.solenoid_b_open = on; }, &Md2Device::has_solenoid_b},
+    {"solenoid_b_short", 0x2312, "solenoid driver 2 short circuit: EMCY 0x2312, FAULT",
+     [](Md2Device& d, bool on) { d.faults_.solenoid_b_short = on; }, &Md2Device::has_solenoid_b},
+    {"supply_low", 0x3412, "supply voltage too low: EMCY 0x3412, FAULT",
+     [](Md2Device& d, bool on) { d.faults_.supply_low = on; }},
+    {"analog_signal_lost", 0x3422,
+     "analog command/feedback below minimum or cable break: EMCY 0x3422 while the analog input is in use "
+     "(0x6042 = 2 or 0x2200 = 2)",
+     [](Md2Device& d, bool on) { d.faults_.analog_signal_lost = on; }},
+    {"general_error", 0x1000, "general internal error: EMCY 0x1000, FAULT",
+     [](Md2Device& d, bool on) { d.faults_.general_error = on; }},
+    {"storage_failure", 0, "non-volatile memory fails: 0x1010/0x1011 abort with 0x06060000",
+     [](Md2Device& d, bool on) {
+       d.faults_.storage_failure = on;
+       d.node_owner_->store().set_failing(on);
+     }},
+    {"paso_control", 0, "the PASO tool holds control: bus control words refused (0x08000021)",
+     [](Md2Device& d, bool on) {
+       d.faults_.paso_control = on;
+       for (auto& ch : d.channels_) ch->control().set_paso_control(on);
+     }},
+};
 
-std::string Md2::inject_fault(std::string_view name, bool active) {
-  bool* flag = nullptr;
-  if (name == "solenoid_a_open") flag = &faults_.solenoid_a_open;
-  if (name == "solenoid_a_short") flag = &faults_.solenoid_a_short;
-  if (options_.solenoids == 2 && name == "solenoid_b_open") flag = &faults_.solenoid_b_open;
-  if (options_.solenoids == 2 && name == "solenoid_b_short") flag = &faults_.solenoid_b_short;
-  if (name == "supply_low") flag = &faults_.supply_low;
-  if (name == "analog_signal_lost") flag = &faults_.analog_signal_lost;
-  if (name == "general_error") flag = &faults_.general_error;
-  if (name == "storage_failure") {
-    faults_.storage_failure = active;
-    node_owner_->store().set_failing(active);
-    return {};
-  }
-  if (name == "paso_control") {
-    faults_.paso_control = active;
-    for (auto& ch : channels_) ch->control().set_paso_control(active);
-    return {};
-  }
-  if (!flag) return Device::inject_fault(name, active);
-  *flag = active;
+std::vector<devices::FaultInfo> Md2Device::faults() const { return devices::fault_infos<Md2Device>(kFaults, *this); }
+
+std::string Md2Device::inject_fault(std::string_view name, bool active) {
+  if (!devices::apply_fault<Md2Device>(kFaults, *this, name, active)) return Device::inject_fault(name, active);
   return {};
 }
 

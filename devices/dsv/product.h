@@ -3,12 +3,12 @@
 
 #include <string>
 
-#include "devices/registry.h"
+#include "devices/product.h"
 
 namespace dsv {
 
 devices::Product product();
 /// The EDS generated from the emulated object dictionary of `variant` ("" = amplifier).
-std::string eds(const std::string& variant);
+std::string eds(const std::string& variant = {});
 
 }  // namespace dsv

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "devices/device.h"
+#include "devices/fault_table.h"
 #include "devices/dsv/actual_value_input.h"
 #include "devices/dsv/dsv_emcy_codes.h"
 #include "devices/dsv/dsv_options.h"
@@ -34,9 +35,9 @@
 
 namespace dsv {
 
-class Dsv final : public devices::Device, private wandfluh::ValveApplication {
+class DsvDevice final : public devices::Device, private wandfluh::ValveApplication {
  public:
-  static std::unique_ptr<Dsv> create(const devices::DeviceOptions& options, std::string& error);
+  static std::unique_ptr<DsvDevice> create(const devices::DeviceOptions& options, std::string& error);
 
   canopen::Node& node() override { return *node_owner_; }
   sim::PortList ports() override;
@@ -57,7 +58,7 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
   double actual_signal() const { return input_->signal(); }
 
  private:
-  Dsv(std::unique_ptr<canopen::Node> node, const DsvOptions& options);
+  DsvDevice(std::unique_ptr<canopen::Node> node, const DsvOptions& options);
 
   // wandfluh::ValveApplication / canopen::Application
   int channel_count() const override { return 1; }
@@ -97,6 +98,9 @@ class Dsv final : public devices::Device, private wandfluh::ValveApplication {
     bool over_current = false, supply_low = false, general_error = false, memory_failure = false;
     bool resolution_update_failure = false, actual_cable_break = false, paso_control = false;
   } faults_;
+  /// Name, EMCY code, what it does, and the condition it sets, per fault (the .cpp's table).
+  static const devices::FaultEntry<DsvDevice> kFaults[];
+  static bool has_solenoid_b(const DsvDevice& d) { return d.options_.solenoids == 2; }
   std::uint64_t conditions_passed_ = kNoConditionsPassed;  ///< detect_errors()' conditions as last passed on
 };
 
