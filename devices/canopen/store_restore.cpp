@@ -151,7 +151,7 @@ SdoAbort StoreRestore::save_group(std::uint8_t sub) {
           v.node_relative = true;
           v.bytes = e.default_value;
         } else {
-          v.bytes = e.value;
+          v.bytes = e.value.bytes();
         }
         store_.put(e.index, e.sub, std::move(v));
       }
@@ -175,7 +175,7 @@ SdoAbort StoreRestore::save_entry(std::uint16_t index, std::uint8_t sub) {
   const OdEntry* e = node_.od().entry(index, sub);
   if (!e) return SdoAbort::NoObject;
   if (failing_) return node_.policy().store.hardware_error;
-  store_.put(index, sub, ParameterStore::Value{false, e->value});
+  store_.put(index, sub, ParameterStore::Value{false, e->value.bytes()});
   std::string error;
   return store_.save(error) ? SdoAbort::None : node_.policy().store.hardware_error;
 }
