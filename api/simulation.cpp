@@ -288,7 +288,7 @@ std::vector<std::uint8_t> Simulation::object(const std::string& node, std::uint1
     std::snprintf(where, sizeof where, "%04Xh:%02X", index, sub);
     fail("object: node '" + node + "' has no entry " + where);
   }
-  return entry->value;
+  return entry->value.bytes();
 }
 
 void Simulation::set_parameter(const std::string& name, double value) {

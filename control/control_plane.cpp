@@ -435,7 +435,7 @@ struct ControlPlane::Server {
       const auto& od = device.node().od();
       for (const auto& e : entries) {
         const auto* entry = od.entry(e.index, e.sub);
-        r.values.push_back(entry ? entry->value : std::vector<std::uint8_t>{});
+        r.values.push_back(entry ? entry->value.bytes() : std::vector<std::uint8_t>{});
         r.scalings.push_back(device.value_scaling(e.index, e.sub));
       }
       return r;

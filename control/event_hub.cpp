@@ -137,7 +137,7 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
           auto& sc = t.scalings.emplace_back();
           for (const auto& e : catalog.entries(static_cast<std::size_t>(n))) {
             const auto* entry = od.entry(e.index, e.sub);
-            v.push_back(entry ? entry->value : std::vector<std::uint8_t>{});
+            v.push_back(entry ? entry->value.bytes() : std::vector<std::uint8_t>{});
             sc.push_back(device.value_scaling(e.index, e.sub));
           }
         }

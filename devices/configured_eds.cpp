@@ -52,7 +52,7 @@ std::string configured_eds(const Product& product, const DeviceOptions& options,
       if (e.node_id_relative && options.node_id == 0 &&
           canopen::decode_unsigned(e.value) == node_relative_value(e, id))
         continue;  // still "$NODEID+base": right for any node-ID the master gives it
-      e.default_value = e.value;
+      e.default_value = e.value.bytes();
       e.node_id_relative = false;
     }
   }

@@ -782,7 +782,7 @@ void Reader::build_object(std::uint16_t index, const ObjectSections& secs) {
       std::uint8_t mapped = 0;
       while (mapped < compact_count && decode_unsigned(od_.entry(index, static_cast<std::uint8_t>(mapped + 1))->default_value) != 0)
         ++mapped;
-      count.default_value = count.value = Bytes{mapped};
+      count.value = count.default_value = Bytes{mapped};
       count.access = od_.entry(index, 1)->access;
       count.name = "Number of mapped objects";
     }

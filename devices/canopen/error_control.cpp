@@ -10,7 +10,7 @@ constexpr std::uint16_t kProducerHeartbeat = 0x1017;
 
 void ErrorControl::bind_objects() {
   auto& od = od_;
-  heartbeat_time_ = od.entry(kProducerHeartbeat, 0);
+  heartbeat_time_ = EntryRef<std::uint16_t>::optional(od, kProducerHeartbeat, 0);
   guard_time_ = od.entry(kGuardTime, 0);
   life_time_factor_ = od.entry(kLifeTimeFactor, 0);
   if (od.entry(kProducerHeartbeat, 0)) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "devices/canopen/node_policy.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/canopen/service_links.h"
 #include "sim/can_frame.h"
@@ -30,7 +31,7 @@ class ErrorControl {
   void reset_communication(sim::Time now);
 
   /// 0x1017 (0 = no heartbeat), read every tick.
-  std::uint16_t heartbeat_period_ms() const { return u16_value(heartbeat_time_); }
+  std::uint16_t heartbeat_period_ms() const { return heartbeat_time_.get(); }
   bool life_guarding_armed() const { return armed_; }
   bool life_guarding_error() const { return in_error_; }
 
@@ -43,7 +44,7 @@ class ErrorControl {
   FrameSender& sender_;
   CommErrorEvents& events_;
   // 0x1017, 0x100C, 0x100D (null when absent): read every tick, bound by bind_objects().
-  const OdEntry* heartbeat_time_ = nullptr;
+  EntryRef<std::uint16_t> heartbeat_time_;
   const OdEntry* guard_time_ = nullptr;
   const OdEntry* life_time_factor_ = nullptr;
   bool toggle_ = false;

@@ -161,7 +161,7 @@ SdoAbort ObjectDictionary::read(std::uint16_t index, std::uint8_t sub, Bytes& ou
   OdEntry* e = nullptr;
   if (auto a = locate(index, sub, e); a != SdoAbort::None) return a;
   if (auto a = read(*e, origin); a != SdoAbort::None) return a;
-  out = e->value;
+  out.assign(e->value.begin(), e->value.end());
   return SdoAbort::None;
 }
 

@@ -20,10 +20,9 @@
 #include "devices/canopen/data_type.h"
 #include "devices/canopen/entry_cache.h"
 #include "devices/canopen/sdo_abort.h"
+#include "devices/canopen/stored_value.h"
 
 namespace canopen {
-
-using Bytes = std::vector<std::uint8_t>;
 
 enum class Access : std::uint8_t { ReadOnly, WriteOnly, ReadWrite, Const };
 enum class ObjectCode : std::uint8_t { Null = 0, Domain = 2, DefType = 5, DefStruct = 6, Var = 7, Array = 8, Record = 9 };
@@ -64,7 +63,7 @@ class OdEntry {
   bool persistent = true;
   /// The EDS default was written "$NODEID+x": default_value holds x and the node-ID is added.
   bool node_id_relative = false;
-  Bytes value;          ///< current value, little-endian
+  StoredValue value;    ///< current value, little-endian (a scalar inline: stored_value.h)
   Bytes default_value;  ///< factory default (without the node-ID for node-relative entries)
   std::optional<Bytes> low_limit, high_limit;  ///< in the entry's type encoding
   std::size_t max_length = 0;  ///< variable-length types: capacity (0 = unlimited)
@@ -345,21 +344,6 @@ T value_as(DataType type, std::span<const std::uint8_t> bytes) {
 template <typename T>
 T OdEntry::as() const {
   return value_as<T>(type, value);
-}
-
-/// An UNSIGNED16 communication parameter read on every tick or transmission (heartbeat period,
-/// inhibit time, event timer): a plain load when the entry has its standard type, else as<>();
-/// 0 for no entry.
-[[gnu::always_inline]] inline std::uint16_t u16_value(const OdEntry* e) {
-  if (!e) return 0;
-  if constexpr (std::endian::native == std::endian::little) {
-    if (e->type == DataType::Unsigned16 && e->value.size() == 2) {
-      std::uint16_t v;
-      std::memcpy(&v, e->value.data(), 2);
-      return v;
-    }
-  }
-  return e->as<std::uint16_t>();
 }
 
 template <typename T>

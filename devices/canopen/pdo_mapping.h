@@ -47,7 +47,7 @@ inline void pack_pdo(const PdoMapping& m, std::span<std::uint8_t, 8> out) {
   unsigned shift = 0;  // < 64 for every object: a mapping holds at most 8 bytes of whole bytes
   for (const auto& o : m.objects) {
     if (o.entry) {
-      const Bytes& v = o.entry->value;
+      const StoredValue& v = o.entry->value;
       const std::size_t n = o.bytes < v.size() ? o.bytes : v.size();
       std::uint64_t x = decode_unsigned(std::span<const std::uint8_t>(v.data(), n));
       if (n < o.bytes && n > 0 && o.sign_extend && (v[n - 1] & 0x80)) {

@@ -35,8 +35,8 @@ void PdoService::bind_objects() {
       r.number = i + 1;
       r.comm_index = comm;
       r.map_index = map;
-      r.inhibit_time = od.entry(comm, 3);
-      r.event_timer = od.entry(comm, 5);
+      r.inhibit_time = EntryRef<std::uint16_t>::optional(od, comm, 3);
+      r.event_timer = EntryRef<std::uint16_t>::optional(od, comm, 5);
       rpdos_.push_back(r);
       install_checks(comm, map, PdoDirection::Receive);
     }
@@ -48,8 +48,8 @@ void PdoService::bind_objects() {
       t.number = i + 1;
       t.comm_index = comm;
       t.map_index = map;
-      t.inhibit_time = od.entry(comm, 3);
-      t.event_timer = od.entry(comm, 5);
+      t.inhibit_time = EntryRef<std::uint16_t>::optional(od, comm, 3);
+      t.event_timer = EntryRef<std::uint16_t>::optional(od, comm, 5);
       tpdos_.push_back(t);
       install_checks(comm, map, PdoDirection::Transmit);
     }
@@ -246,9 +246,9 @@ int PdoService::rpdo_length(int number) const {
   return -1;
 }
 
-std::uint16_t PdoService::event_timer_ms(const Pdo& p) const { return u16_value(p.event_timer); }
+std::uint16_t PdoService::event_timer_ms(const Pdo& p) const { return p.event_timer.get(); }
 
-std::uint16_t PdoService::inhibit_100us(const Pdo& p) const { return u16_value(p.inhibit_time); }
+std::uint16_t PdoService::inhibit_100us(const Pdo& p) const { return p.inhibit_time.get(); }
 
 // ---- receive ------------------------------------------------------------------------------------
 

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/node_policy.h"
 #include "devices/canopen/pdo_mapping.h"
 #include "devices/canopen/service_links.h"
@@ -77,8 +78,8 @@ class PdoService {
     std::uint8_t type = 255;
     PdoMapping mapping;
     // Communication sub 3 (inhibit time) and 5 (event timer), read every tick; null when absent.
-    const OdEntry* inhibit_time = nullptr;
-    const OdEntry* event_timer = nullptr;
+    EntryRef<std::uint16_t> inhibit_time;
+    EntryRef<std::uint16_t> event_timer;
   };
   struct Rpdo : Pdo {
     bool latched = false;

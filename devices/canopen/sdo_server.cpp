@@ -218,7 +218,7 @@ void SdoServer::initiate_upload(const std::uint8_t* req) {
     std::copy(e->value.begin(), e->value.end(), r.begin() + 4);
     return respond(r);
   }
-  buffer_ = e->value;  // snapshot: the value may change while the client reads segments
+  buffer_.assign(e->value.begin(), e->value.end());  // snapshot: the value may change while the client reads segments
   state_ = State::Upload;
   index_ = index;
   sub_ = sub;

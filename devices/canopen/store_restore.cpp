@@ -152,7 +152,7 @@ SdoAbort StoreRestore::save_group(std::uint8_t sub) {
           v.node_relative = true;
           v.bytes = e.default_value;
         } else {
-          v.bytes = e.value;
+          v.bytes = e.value.bytes();
         }
         store_.put(e.index, e.sub, std::move(v));
       }
@@ -176,7 +176,7 @@ SdoAbort StoreRestore::save_entry(std::uint16_t index, std::uint8_t sub) {
   const OdEntry* e = od_.entry(index, sub);
   if (!e) return SdoAbort::NoObject;
   if (store_.failing()) return policy_.hardware_error;
-  store_.put(index, sub, ParameterStore::Value{false, e->value});
+  store_.put(index, sub, ParameterStore::Value{false, e->value.bytes()});
   std::string error;
   return store_.save(error) ? SdoAbort::None : policy_.hardware_error;
 }

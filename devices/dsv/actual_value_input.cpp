@@ -30,7 +30,7 @@ const ActualValueInput::Scaling& ActualValueInput::scaling(std::int8_t m) const 
 }
 
 bool ActualValueInput::cable_break() const {
-  return cable_break_detection_.as<std::int64_t>() == 1 && signal_type() == 3 && signal_ < o_.cable_break_ma;
+  return cable_break_detection_.get() == 1 && signal_type() == 3 && signal_ < o_.cable_break_ma;
 }
 
 double ActualValueInput::adc_full_scale() const { return signal_type() == 0 ? 10000.0 : 20000.0; }
@@ -55,7 +55,7 @@ double ActualValueInput::value(std::int8_t m) const {
     return std::clamp(std::round(counts), 0.0, 16384.0);
   }
   const Scaling& s = scaling(m);
-  auto get = [](const devices::IntegerEntry& e) { return e.as<std::int64_t>(); };  // as DsvParameters::value()
+  auto get = [](const canopen::EntryRef<std::int64_t>& e) { return e.get(); };  // as DsvParameters::value()
   const double min_ref = static_cast<double>(get(s.min_reference));
   const double max_ref = static_cast<double>(get(s.max_reference));
   const double fs = adc_full_scale();

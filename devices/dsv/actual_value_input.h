@@ -46,15 +46,15 @@ class ActualValueInput {
   double adc_full_scale() const;                            ///< 10000 mV or 20000 µA
   /// Min/max reference and interface of closed-loop mode `m` (DsvParameters::scaling_objects), bound.
   struct Scaling {
-    devices::IntegerEntry min_reference, max_reference, min_interface, max_interface;
+    canopen::EntryRef<std::int64_t> min_reference, max_reference, min_interface, max_interface;
   };
   const Scaling& scaling(std::int8_t m) const;
-  std::int64_t signal_type() const { return signal_type_.as<std::int64_t>(); }  // 2200h
+  std::int64_t signal_type() const { return signal_type_.get(); }  // 2200h
 
   DsvParameters& p_;
   const DsvOptions& o_;
   // Read every cycle: bound once instead of looked up by index.
-  devices::IntegerEntry signal_type_, cable_break_detection_;  // 2200h, 2201h
+  canopen::EntryRef<std::int64_t> signal_type_, cable_break_detection_;  // 2200h, 2201h
   Scaling scaling_[3];                                          // modes 4, 7, 9
   double signal_ = 0;
 };

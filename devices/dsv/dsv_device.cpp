@@ -10,7 +10,6 @@
 #include "devices/dsv/dsv_object_dictionary.h"
 #include "devices/dsv/dsv_objects.h"
 #include "devices/dsv/dsv_scaling.h"
-#include "devices/profiles/dsp408/od_value.h"
 
 namespace dsv {
 
@@ -99,7 +98,7 @@ void DsvDevice::install_device_hooks() {
     auto aliased = [this] { return parameters_->control_mode() == mode::kDsc; };
     od.add_read_hook(kAlias, 1, [this, aliased](OdEntry& e, Origin) {
       if (!aliased()) return SdoAbort::None;
-      if (!alias_saved_) alias_saved_ = e.value;
+      if (!alias_saved_) alias_saved_ = e.value.bytes();
       e.value = node_owner_->od().entry(kAliasTarget, 1)->value;
       return SdoAbort::None;
     });
@@ -107,7 +106,7 @@ void DsvDevice::install_device_hooks() {
         kAlias, 1,
         [this, aliased](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
           if (!aliased()) return SdoAbort::None;
-          if (!alias_saved_) alias_saved_ = e.value;
+          if (!alias_saved_) alias_saved_ = e.value.bytes();
           return node_owner_->od().write(kAliasTarget, 1, data, origin);
         },
         CheckStage::Value);
@@ -136,18 +135,18 @@ void DsvDevice::install_device_hooks() {
   };
   for (std::uint16_t index : kMeasured) od.add_read_hook(index, 1, refresh);
   od.add_read_hook(0x2050, 1, [this](OdEntry& e, Origin) {
-    dsp408::put(e, input_->internal_resolution(parameters_->control_mode()));
+    canopen::EntryRef<std::int64_t>(e).set(input_->internal_resolution(parameters_->control_mode()));
     return SdoAbort::None;
   });
   temperature_entry_ = od.entry(0x2002, 0);
-  temperature_out_ = dsp408::RoundedOutput(temperature_entry_, -55, 150);
+  temperature_out_ = canopen::EntryRef<std::int64_t>::optional(temperature_entry_);
   od.add_read_hook(0x2002, 0, [this](OdEntry& e, Origin) {
-    dsp408::put_rounded(e, temperature_, -55, 150);
+    canopen::EntryRef<std::int64_t>(e).set_rounded(temperature_, -55, 150);
     return SdoAbort::None;
   });
   // 1A01h:02 reads as printed for mode 4 (63'81'00'10h, A-05) while the PDO carries 6381h:01.
   od.add_read_hook(0x1A01, 2, [this](OdEntry& e, Origin) {
-    if (mapping_mode_ == mode::kVprcClosed) dsp408::put(e, mapping_entry(0x6381, 0, options_.m4_tpdo_six_bytes ? 32 : 16));
+    if (mapping_mode_ == mode::kVprcClosed) canopen::EntryRef<std::int64_t>(e).set(mapping_entry(0x6381, 0, options_.m4_tpdo_six_bytes ? 32 : 16));
     return SdoAbort::None;
   });
   for (std::uint16_t comm : {0x1400, 0x1401, 0x1800, 0x1801}) {
@@ -213,7 +212,7 @@ void DsvDevice::reset_model() {
 }
 
 void DsvDevice::restore_mapping_entry() {
-  if (mapping_mode_ == mode::kVprcClosed) dsp408::put(*node_owner_->od().entry(0x1A01, 2), tpdo2_internal_);
+  if (mapping_mode_ == mode::kVprcClosed) canopen::EntryRef<std::int64_t>(*node_owner_->od().entry(0x1A01, 2)).set(tpdo2_internal_);
 }
 
 void DsvDevice::restore_alias_entry() {
@@ -228,10 +227,10 @@ void DsvDevice::regenerate_pdos() {
   const std::int8_t m = parameters_->control_mode();
   const PdoSet set = pdo_set(m, parameters_->mode_of_operation(), options_.m4_tpdo_six_bytes);
   auto write = [&od](std::uint16_t index, std::vector<std::uint32_t> entries, int capacity) {
-    dsp408::put(*od.entry(index, 0), static_cast<std::int64_t>(entries.size()));
+    canopen::EntryRef<std::int64_t>(*od.entry(index, 0)).set(static_cast<std::int64_t>(entries.size()));
     for (int sub = 1; sub <= capacity; ++sub) {
       const auto i = static_cast<std::size_t>(sub - 1);
-      dsp408::put(*od.entry(index, static_cast<std::uint8_t>(sub)), i < entries.size() ? entries[i] : 0u);
+      canopen::EntryRef<std::int64_t>(*od.entry(index, static_cast<std::uint8_t>(sub))).set(i < entries.size() ? entries[i] : 0u);
     }
   };
   mapping_mode_ = m;
@@ -300,7 +299,7 @@ void DsvDevice::process(sim::Time now, sim::Duration dt) {
   solenoid_b_ = outputs_allowed() ? chain_->solenoid_b() : 0.0;
   const double target = options_.ambient_temperature + options_.thermal_gain * (solenoid_a_ * solenoid_a_ + solenoid_b_ * solenoid_b_);
   temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
-  temperature_out_.put(temperature_);
+  temperature_out_.set_rounded(temperature_, -55, 150);
   restore_mapping_entry();
   restore_alias_entry();
 }

@@ -30,7 +30,7 @@
 #include "devices/dsv/dsv_parameters.h"
 #include "devices/dsv/dsv_signal_chain.h"
 #include "devices/profiles/dsp408/channel_control.h"
-#include "devices/profiles/dsp408/od_value.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/profiles/wandfluh/valve_application.h"
 
 namespace dsv {
@@ -81,7 +81,7 @@ class DsvDevice final : public devices::Device, private wandfluh::ValveApplicati
   std::unique_ptr<ActualValueInput> input_;
   std::unique_ptr<DsvSignalChain> chain_;
   canopen::OdEntry* temperature_entry_ = nullptr;
-  dsp408::RoundedOutput temperature_out_;  // 0x2002, published every cycle
+  canopen::EntryRef<std::int64_t> temperature_out_;  // 0x2002, published every cycle
 
   int active_rpdo_ = 1, active_tpdo_ = 1;
   std::int8_t mapping_mode_ = 0;     ///< control mode the PDO set was generated for

@@ -5,7 +5,6 @@
 
 #include "devices/canopen/parameter_store.h"
 #include "devices/dsv/control_mode.h"
-#include "devices/profiles/dsp408/od_value.h"
 
 namespace dsv {
 
@@ -30,7 +29,7 @@ DsvParameters::DsvParameters(canopen::ObjectDictionary& od, const DsvOptions& op
       o_(options),
       control_mode_(od, 0x6043, 0),
       mode_of_operation_(od, 0x2042, 0),
-      characteristic_optimisation_on_(od.entry(0x2344, 1)),
+      characteristic_optimisation_on_(canopen::EntryRef<std::int64_t>::optional(od.entry(0x2344, 1))),
       displayed_unit_(od.entry(0x2202, 0)) {
   for (const auto& spec : application_objects()) (void)value_entry(spec.index);
   install_rules();
@@ -168,13 +167,13 @@ void DsvParameters::install_shared() {
     shared_[static_cast<std::size_t>(spec.shared)].push_back(od_.entry(spec.index, spec.shape == Shape::Record ? 1 : 0));
   }
   for (std::size_t group = 0; group < shared_.size(); ++group)
-    shared_first_[group] = devices::IntegerEntry(shared_[group].empty() ? nullptr : shared_[group].front());
+    shared_first_[group] = canopen::EntryRef<std::int64_t>::optional(shared_[group].empty() ? nullptr : shared_[group].front());
   for (std::size_t group = 1; group < shared_.size(); ++group) {
     for (OdEntry* e : shared_[group]) {
       od_.add_observer(e->index, e->sub, [this, group](OdEntry& written, Origin) {
         const auto v = written.as<std::int64_t>();
         for (OdEntry* other : shared_[group])
-          if (other != &written) dsp408::put(*other, v);
+          if (other != &written) canopen::EntryRef<std::int64_t>(*other).set(v);
       });
     }
   }
@@ -183,7 +182,7 @@ void DsvParameters::install_shared() {
     for (std::uint16_t index : {std::uint16_t{0x2344}, std::uint16_t{0x23C4}}) {
       const std::uint16_t other = index == 0x2344 ? 0x23C4 : 0x2344;
       od_.add_observer(index, sub, [this, other, sub](OdEntry& written, Origin) {
-        dsp408::put(*od_.entry(other, sub), written.as<std::int64_t>());
+        canopen::EntryRef<std::int64_t>(*od_.entry(other, sub)).set(written.as<std::int64_t>());
       });
     }
   }
@@ -198,11 +197,11 @@ void DsvParameters::install_characteristic_optimisation(std::uint16_t index) {
     return curves_[solenoid].point(k - 1u);
   };
   od_.add_read_hook(index, 4, [point](OdEntry& e, Origin) {
-    dsp408::put(e, std::llround(point().x * 100));
+    canopen::EntryRef<std::int64_t>(e).set(std::llround(point().x * 100));
     return SdoAbort::None;
   });
   od_.add_read_hook(index, 5, [point](OdEntry& e, Origin) {
-    dsp408::put(e, std::llround(point().y * 1000));
+    canopen::EntryRef<std::int64_t>(e).set(std::llround(point().y * 1000));
     return SdoAbort::None;
   });
   od_.after_write<std::uint16_t>(index, 4, [point](std::uint16_t v, Origin) { point().x = v / 100.0; });

@@ -8,14 +8,13 @@
 #include <cstdint>
 #include <vector>
 
-#include "devices/canopen/bound_entry.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/entry_cache.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/canopen/parameter_store.h"
 #include "devices/dsv/dsv_objects.h"
 #include "devices/dsv/dsv_options.h"
 #include "devices/profiles/dsp408/characteristic_curve.h"
-#include "devices/profiles/dsp408/od_value.h"
 
 namespace dsv {
 
@@ -28,13 +27,13 @@ class DsvParameters {
   std::int8_t control_mode() const { return control_mode_.get(); }
   std::int8_t mode_of_operation() const { return mode_of_operation_.get(); }
   /// Value of a shared parameter (all its indices hold the same value).
-  std::int64_t shared(Shared s) const { return shared_first_[static_cast<std::size_t>(s)].as<std::int64_t>(); }
+  std::int64_t shared(Shared s) const { return shared_first_[static_cast<std::size_t>(s)].get(); }
   /// Value (sub 1 of a record, sub 0 of a VAR) of an application object.
   std::int64_t value(std::uint16_t index) const;
   /// The entry value() reads (null when there is none): for code that binds it once.
   canopen::OdEntry* value_entry(std::uint16_t index) const;
   /// The same entry bound for per-cycle reads (unbound when there is none): value() without the lookup.
-  devices::IntegerEntry bind_value(std::uint16_t index) const { return devices::IntegerEntry(value_entry(index)); }
+  canopen::EntryRef<std::int64_t> bind_value(std::uint16_t index) const { return canopen::EntryRef<std::int64_t>::optional(value_entry(index)); }
   canopen::OdEntry& entry(std::uint16_t index);
 
   /// Maximum raw value of the unit selected by 2202h for closed-loop mode `m` (0 = "–").
@@ -46,7 +45,7 @@ class DsvParameters {
   static Scaling scaling_objects(std::int8_t m);
 
   dsp408::CharacteristicCurve& curve(int solenoid) { return curves_[static_cast<std::size_t>(solenoid)]; }
-  bool characteristic_on() const { return static_cast<std::uint16_t>(characteristic_optimisation_on_.as<std::int64_t>()) == 1; }
+  bool characteristic_on() const { return static_cast<std::uint16_t>(characteristic_optimisation_on_.get()) == 1; }
   /// Characteristic points in the store (pseudo sub-indices of 0x2344 ≥ 0x10, saved with the
   /// application group): into / out of the curves.
   void save_curves(canopen::ParameterStore& memory) const;
@@ -64,15 +63,15 @@ class DsvParameters {
 
   canopen::ObjectDictionary& od_;
   const DsvOptions& o_;
-  canopen::BoundEntry<std::int8_t> control_mode_;
-  canopen::BoundEntry<std::int8_t> mode_of_operation_;
-  devices::IntegerEntry characteristic_optimisation_on_;  // 0x2344:01
+  canopen::EntryRef<std::int8_t> control_mode_;
+  canopen::EntryRef<std::int8_t> mode_of_operation_;
+  canopen::EntryRef<std::int64_t> characteristic_optimisation_on_;  // 0x2344:01
   canopen::OdEntry* displayed_unit_;               // 0x2202
   // index → the entry value() reads (sub 1 of a record, else sub 0): one probe per read, filled
   // with every application object when built.
   mutable canopen::EntryCache values_;
   std::array<std::vector<canopen::OdEntry*>, 17> shared_{};
-  std::array<devices::IntegerEntry, 17> shared_first_{};  // the entry shared() reads
+  std::array<canopen::EntryRef<std::int64_t>, 17> shared_first_{};  // the entry shared() reads
   std::array<dsp408::CharacteristicCurve, 2> curves_;
 };
 

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "devices/dsv/control_mode.h"
-#include "devices/profiles/dsp408/od_value.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/profiles/dsp408/solenoid_current.h"
 
 namespace dsv {
@@ -279,16 +279,16 @@ void DsvSignalChain::publish_measurements() {
   const int on = m == mode::kVprcClosed ? 0 : m == mode::kDsc ? 1 : m == mode::kDpc ? 2 : -1;
   for (int i = 0; i < 3; ++i) {
     if (i != on) {  // the objects of the other modes read 0
-      dsp408::put(*measured_[2 * i], 0);
-      dsp408::put(*measured_[2 * i + 1], 0);
+      canopen::EntryRef<std::int64_t>(*measured_[2 * i]).set(0);
+      canopen::EntryRef<std::int64_t>(*measured_[2 * i + 1]).set(0);
     }
   }
   if (on < 0) return;
   const double lim = on == 0 ? 32767.0 : 2147483647.0;
   const double x = input_.value(m);
   const double w = loops_[on].setpoint->as<double>();
-  dsp408::put_rounded(*loops_[on].actual, x, -lim - 1, lim);
-  dsp408::put_rounded(*loops_[on].deviation, w - x, -lim - 1, lim);
+  canopen::EntryRef<std::int64_t>(*loops_[on].actual).set_rounded(x, -lim - 1, lim);
+  canopen::EntryRef<std::int64_t>(*loops_[on].deviation).set_rounded(w - x, -lim - 1, lim);
 }
 
 dsp408::StatusFlags DsvSignalChain::status_flags() const {

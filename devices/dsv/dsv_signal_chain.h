@@ -54,10 +54,10 @@ class DsvSignalChain {
   };
   /// Parameters read every cycle (DsvParameters::bind_value, bound once; unbound when absent).
   struct Parameters {
-    devices::IntegerEntry vpoc_a, vpoc_b, vprc_a, vprc_b, dcol, inversion, error_handling, system_inverted, falling_a,
+    canopen::EntryRef<std::int64_t> vpoc_a, vpoc_b, vprc_a, vprc_b, dcol, inversion, error_handling, system_inverted, falling_a,
         falling_b, imin_always, solenoid_off_disabled, speed_pos, speed_neg;
   };
-  static std::int64_t value(const devices::IntegerEntry& e) { return e.as<std::int64_t>(); }
+  static std::int64_t value(const canopen::EntryRef<std::int64_t>& e) { return e.get(); }
   static std::int64_t value(const canopen::OdEntry* e) { return e ? e->as<std::int64_t>() : 0; }
   LoopObjects loop_objects(std::int8_t m, canopen::ObjectDictionary& od);
   template <typename E>

@@ -2,7 +2,7 @@
 
 #include "devices/canopen/emergency.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
-#include "devices/profiles/cia406/od_value.h"
+#include "devices/canopen/entry_ref.h"
 
 namespace hlt1100 {
 
@@ -15,13 +15,13 @@ Diagnostics::Diagnostics(canopen::Node& node, const Settings& settings) : node_(
 void Diagnostics::bind(cia406::StatusRecorder& recorder) {
   recorder_ = &recorder;
   auto& od = node_.od();
-  alarms_entry_ = od.entry(obj::kAlarms, 0);
-  count_entry_ = od.entry(obj::kErrorField, 0);
-  last_entry_entry_ = od.entry(obj::kErrorField, 1);
+  alarms_entry_ = canopen::EntryRef<std::uint16_t>::optional(od, obj::kAlarms, 0);
+  count_entry_ = canopen::EntryRef<std::uint8_t>::optional(od, obj::kErrorField, 0);
+  last_entry_entry_ = canopen::EntryRef<std::uint32_t>::optional(od, obj::kErrorField, 1);
   // Reading the error register consumes one entry of the list [M §12.2.1]. The answer carries
   // the register as it was; the EMCY 0x0000 follows the answer.
   od.add_read_hook(obj::kErrorRegister, 0, [this](OdEntry& e, Origin origin) {
-    cia406::publish(e, error_register());
+    canopen::EntryRef<std::uint8_t>(e).set(error_register());
     if (origin != Origin::Sdo || count_ == 0) return SdoAbort::None;
     --count_;
     if (count_ == 0) communication_latched_ = false;
@@ -36,7 +36,7 @@ void Diagnostics::bind(cia406::StatusRecorder& recorder) {
     if (origin == Origin::Sdo) clear_list(true);
   });
   od.add_read_hook(obj::kErrorField, 0, [this](OdEntry& e, Origin) {
-    cia406::publish(e, count_);
+    canopen::EntryRef<std::uint8_t>(e).set(count_);
     return SdoAbort::None;
   });
 }
@@ -63,9 +63,9 @@ void Diagnostics::record(std::uint16_t code) {
 
 void Diagnostics::publish() {
   if (!alarms_entry_) return;  // not bound yet
-  cia406::publish(*alarms_entry_, alarms_);
-  cia406::publish(*count_entry_, count_);
-  cia406::publish(*last_entry_entry_, last_entry_);
+  alarms_entry_.set(alarms_);
+  count_entry_.set(count_);
+  last_entry_entry_.set(last_entry_);
   const std::uint8_t er = error_register();
   if (er != published_register_) {
     published_register_ = er;

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/node.h"
 #include "devices/hlt1100/hlt1100_settings.h"
 #include "devices/profiles/cia406/status_machines.h"
@@ -69,9 +70,9 @@ class Diagnostics {
   std::size_t queued_ = 0;
   std::uint8_t published_register_ = 0;
   cia406::StatusRecorder* recorder_ = nullptr;
-  canopen::OdEntry* alarms_entry_ = nullptr;
-  canopen::OdEntry* count_entry_ = nullptr;
-  canopen::OdEntry* last_entry_entry_ = nullptr;  // EMCY 0x0000 owed after 0x1001 reads (sent after the SDO answer)
+  canopen::EntryRef<std::uint16_t> alarms_entry_;
+  canopen::EntryRef<std::uint8_t> count_entry_;
+  canopen::EntryRef<std::uint32_t> last_entry_entry_;  // EMCY 0x0000 owed after 0x1001 reads (sent after the SDO answer)
 };
 
 }  // namespace hlt1100

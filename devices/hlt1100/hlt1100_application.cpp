@@ -7,7 +7,6 @@
 #include "devices/canopen/store_restore.h"
 #include "devices/hlt1100/hlt1100_object_dictionary.h"
 #include "devices/profiles/cia406/arithmetic.h"
-#include "devices/profiles/cia406/od_value.h"
 
 namespace hlt1100 {
 
@@ -54,9 +53,9 @@ SdoAbort Application::parameter_out_of_range(const OdEntry& entry, std::span<std
 void Application::bind() {
   auto& od = node_.od();
   diagnostics_.bind(status_recorder_);
-  position_ = od.entry(obj::kPosition, 1);
-  speed_ = od.entry(obj::kSpeed, 1);
-  status_ = od.entry(obj::kOperatingStatus, 0);
+  position_ = canopen::EntryRef<std::int32_t>::optional(od, obj::kPosition, 1);
+  speed_ = canopen::EntryRef<std::int16_t>::optional(od, obj::kSpeed, 1);
+  status_ = canopen::EntryRef<std::uint16_t>::optional(od, obj::kOperatingStatus, 0);
 
   // 6000h: only the code-sequence bit exists.
   od.add_check(obj::kOperatingParameters, 0, [this](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
@@ -166,7 +165,7 @@ void Application::load_parameters() {
   auto& od = node_.od();
   const auto op = od.get<std::uint16_t>(obj::kOperatingParameters, 0);
   config_.decreasing = (op & cia406::kLinearCodeSequenceDecreasing) != 0;
-  cia406::publish(*status_, static_cast<std::uint16_t>(op & cia406::kLinearCodeSequenceDecreasing));
+  status_.set(static_cast<std::uint16_t>(op & cia406::kLinearCodeSequenceDecreasing));
   offset_ = od.get<std::int32_t>(obj::kOffset, 1);
 }
 
@@ -244,7 +243,7 @@ void Application::sample(sim::Time now, bool evaluate_alarms) {
   valid_ = m.valid;
   if (valid_ || !settings_.hold_last_on_error) {
     const std::int64_t pos = valid_ ? cia406::linear_position(raw_, offset_, config_) : 0;
-    cia406::publish(*position_, static_cast<std::int32_t>(pos));
+    position_.set(static_cast<std::int32_t>(pos));
   }
   // Speed in 6005h:02 units (0.01 mm/s each); positive when 6020h rises [REC].
   double speed = 0.0;
@@ -253,7 +252,7 @@ void Application::sample(sim::Time now, bool evaluate_alarms) {
     const double um_per_s = motion_.speed() * (config_.decreasing ? -1.0 : 1.0);
     speed = cia406::round_half_away(um_per_s / (10.0 * settings_.speed_step));  // = std::round
   }
-  cia406::publish(*speed_, cia406::saturate_i16(speed));
+  speed_.set(cia406::saturate_i16(speed));
   if (evaluate_alarms) diagnostics_.set_alarm(kPositionError, !valid_);
 }
 

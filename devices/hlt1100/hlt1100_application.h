@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "devices/canopen/application.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/node.h"
 #include "devices/hlt1100/diagnostics.h"
 #include "devices/hlt1100/hlt1100_settings.h"
@@ -65,9 +66,9 @@ class Application final : public canopen::Application {
   bool write_ignored_ = false;  // an out-of-range parameter was confirmed but not applied
   bool eeprom_check_pending_ = false;  // a failing EEPROM is found at start-up (6503h bit 12)
   sim::Time next_sample_{};
-  canopen::OdEntry* position_ = nullptr;
-  canopen::OdEntry* speed_ = nullptr;
-  canopen::OdEntry* status_ = nullptr;
+  canopen::EntryRef<std::int32_t> position_;
+  canopen::EntryRef<std::int16_t> speed_;
+  canopen::EntryRef<std::uint16_t> status_;
   cia406::StatusRecorder status_recorder_{node_, status_bits()};
 };
 

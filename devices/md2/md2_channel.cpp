@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "devices/profiles/dsp408/od_value.h"
 
 namespace md2 {
 
@@ -33,9 +32,9 @@ Md2Channel::Md2Channel(canopen::ObjectDictionary& od, const Md2Options& options,
 }
 
 void Md2Channel::install(canopen::ObjectDictionary& od) {
-  device_mode_ = canopen::BoundEntry<std::int8_t>(od, ix_.device_mode(), 0);
-  control_mode_ = canopen::BoundEntry<std::int8_t>(od, ix_.control_mode(), 0);
-  actual_mode_ = canopen::BoundEntry<std::int8_t>::optional(od, ix_.actual_value_mode(), 0);
+  device_mode_ = canopen::EntryRef<std::int8_t>(od, ix_.device_mode(), 0);
+  control_mode_ = canopen::EntryRef<std::int8_t>(od, ix_.control_mode(), 0);
+  actual_mode_ = canopen::EntryRef<std::int8_t>::optional(od, ix_.actual_value_mode(), 0);
   actual_in_16_ = od.entry(ix_.actual_input_16(), 0);
   actual_in_32_ = od.entry(ix_.actual_input_32(), 0);
   speed_pos_ = od.entry(ix_.speed_positive(), 0);
@@ -171,8 +170,8 @@ void Md2Channel::publish_measurements() {
   for (int i = 0; i < 3; ++i) {
     const bool on = i == active;
     const double lim = i == 0 ? 32767.0 : 2147483647.0;
-    dsp408::put_rounded(*actuals_[i], on ? last_actual_ : 0.0, -lim - 1, lim);
-    dsp408::put_rounded(*deviations_[i], on ? w - last_actual_ : 0.0, -lim - 1, lim);
+    canopen::EntryRef<std::int64_t>(*actuals_[i]).set_rounded(on ? last_actual_ : 0.0, -lim - 1, lim);
+    canopen::EntryRef<std::int64_t>(*deviations_[i]).set_rounded(on ? w - last_actual_ : 0.0, -lim - 1, lim);
   }
 }
 

@@ -8,7 +8,7 @@
 
 #include <cstdint>
 
-#include "devices/canopen/bound_entry.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/md2/control_mode.h"
 #include "devices/md2/md2_options.h"
@@ -95,9 +95,9 @@ class Md2Channel {
   dsp408::SolenoidCurve curve_a_, curve_b_;
 
   // Entries read every cycle (stable addresses in the node's dictionary).
-  canopen::BoundEntry<std::int8_t> device_mode_;
-  canopen::BoundEntry<std::int8_t> control_mode_;
-  canopen::BoundEntry<std::int8_t> actual_mode_;  // unbound on channels without feedback
+  canopen::EntryRef<std::int8_t> device_mode_;
+  canopen::EntryRef<std::int8_t> control_mode_;
+  canopen::EntryRef<std::int8_t> actual_mode_;  // unbound on channels without feedback
   canopen::OdEntry* actual_in_16_ = nullptr;
   canopen::OdEntry* actual_in_32_ = nullptr;
   canopen::OdEntry* speed_pos_ = nullptr;

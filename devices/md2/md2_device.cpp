@@ -7,7 +7,6 @@
 #include "devices/canopen/pdo_service.h"
 #include "devices/canopen/store_restore.h"
 #include "devices/md2/md2_object_dictionary.h"
-#include "devices/profiles/dsp408/od_value.h"
 
 namespace md2 {
 
@@ -49,9 +48,9 @@ Md2Device::Md2Device(std::unique_ptr<canopen::Node> node, const Md2Options& opti
     channels_.push_back(std::make_unique<Md2Channel>(n.od(), options_, c));
   }
   temperature_entry_ = n.od().entry(0x2002, 0);
-  temperature_out_ = dsp408::RoundedOutput(temperature_entry_, -55, 150);
+  temperature_out_ = canopen::EntryRef<std::int64_t>::optional(temperature_entry_);
   n.od().add_read_hook(0x2002, 0, [this](canopen::OdEntry& e, canopen::Origin) {
-    dsp408::put_rounded(e, temperature_, -55, 150);
+    canopen::EntryRef<std::int64_t>(e).set_rounded(temperature_, -55, 150);
     return canopen::SdoAbort::None;
   });
   // Delivery state (§5.8): node address from the command line, the pre-configured control mode.
@@ -127,7 +126,7 @@ void Md2Device::process(sim::Time now, sim::Duration dt) {
   const double target = options_.ambient_temperature +
                         options_.thermal_gain * (ch1.solenoid_a * ch1.solenoid_a + ch1.solenoid_b * ch1.solenoid_b);
   temperature_ += (target - temperature_) * std::min(1.0, seconds / 60.0);
-  temperature_out_.put(temperature_);
+  temperature_out_.set_rounded(temperature_, -55, 150);
 }
 
 sim::PortList Md2Device::ports() {

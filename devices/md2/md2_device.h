@@ -25,7 +25,7 @@
 #include "devices/md2/md2_channel.h"
 #include "devices/md2/md2_emcy_codes.h"
 #include "devices/md2/md2_options.h"
-#include "devices/profiles/dsp408/od_value.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/profiles/wandfluh/valve_application.h"
 
 namespace md2 {
@@ -72,7 +72,7 @@ class Md2Device final : public devices::Device, private wandfluh::ValveApplicati
   std::unique_ptr<canopen::Node> node_owner_;
   std::vector<std::unique_ptr<Md2Channel>> channels_;
   canopen::OdEntry* temperature_entry_ = nullptr;
-  dsp408::RoundedOutput temperature_out_;  // 0x2002, published every cycle
+  canopen::EntryRef<std::int64_t> temperature_out_;  // 0x2002, published every cycle
 
   // Inputs and fault conditions.
   double enable_input_ = 1;

@@ -6,10 +6,10 @@ namespace vtvpcd {
 
 namespace {
 template <typename T, std::size_t N>
-void bind_table(std::array<canopen::BoundEntry<T>, N>& table, canopen::ObjectDictionary& od, std::uint16_t base,
+void bind_table(std::array<canopen::EntryRef<T>, N>& table, canopen::ObjectDictionary& od, std::uint16_t base,
                 int stride) {
   for (std::size_t i = 0; i < N; ++i)
-    table[i] = canopen::BoundEntry<T>(od, static_cast<std::uint16_t>(base + stride * static_cast<int>(i)), 0);
+    table[i] = canopen::EntryRef<T>(od, static_cast<std::uint16_t>(base + stride * static_cast<int>(i)), 0);
 }
 }  // namespace
 

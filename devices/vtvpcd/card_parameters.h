@@ -8,7 +8,7 @@
 #include <array>
 #include <cstdint>
 
-#include "devices/canopen/bound_entry.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/object_dictionary.h"
 
 namespace vtvpcd {
@@ -40,14 +40,14 @@ class CardParameters {
   std::uint16_t contr_i(int g) const { return contr_i_[static_cast<std::size_t>(g)].get(); }
 
  private:
-  canopen::BoundEntry<std::uint32_t> trigger_;
-  canopen::BoundEntry<std::int32_t> zeropoint_pump_;
-  canopen::BoundEntry<std::int16_t> zeropoint_valve_;
-  canopen::BoundEntry<std::uint16_t> gain_lvdt_pump_;
-  canopen::BoundEntry<std::int32_t> angle_cmd_bus_, pressure_cmd_bus_, power_cmd_bus_, res_angle_cmd_bus_;
-  std::array<canopen::BoundEntry<std::int32_t>, kSets> angle_cmd_binary_, press_cmd_binary_, power_cmd_binary_;
-  std::array<canopen::BoundEntry<std::uint16_t>, kSets> angle_ramp_binary_, press_ramp_binary_;
-  std::array<canopen::BoundEntry<std::uint16_t>, kGroups> contr_p_, contr_i_;
+  canopen::EntryRef<std::uint32_t> trigger_;
+  canopen::EntryRef<std::int32_t> zeropoint_pump_;
+  canopen::EntryRef<std::int16_t> zeropoint_valve_;
+  canopen::EntryRef<std::uint16_t> gain_lvdt_pump_;
+  canopen::EntryRef<std::int32_t> angle_cmd_bus_, pressure_cmd_bus_, power_cmd_bus_, res_angle_cmd_bus_;
+  std::array<canopen::EntryRef<std::int32_t>, kSets> angle_cmd_binary_, press_cmd_binary_, power_cmd_binary_;
+  std::array<canopen::EntryRef<std::uint16_t>, kSets> angle_ramp_binary_, press_ramp_binary_;
+  std::array<canopen::EntryRef<std::uint16_t>, kGroups> contr_p_, contr_i_;
 };
 
 }  // namespace vtvpcd

@@ -79,15 +79,15 @@ VtvpcdDevice::VtvpcdDevice(Settings settings)
   faults_ = std::make_unique<FaultMonitor>(node_->emergency(), settings_);
   static_assert(std::tuple_size_v<decltype(eu_out_)> == kEuSlotCount);
   for (std::size_t s = 0; s < kEuSlotCount; ++s) {
-    eu_out_[s].entry = canopen::BoundEntry<std::int32_t>(od, kEuSlotIndex[s], 0);
+    eu_out_[s].entry = canopen::EntryRef<std::int32_t>(od, kEuSlotIndex[s], 0);
     eu_out_[s].scale = s == kPressCmd && settings_.press_cmd_scale_printed ? kScalePressCmdPrinted : kEuSlotScale[s];
   }
-  angle_binary_out_ = canopen::BoundEntry<std::int32_t>(od, idx::kAngleCmdBinary, 0);
-  press_binary_out_ = canopen::BoundEntry<std::int32_t>(od, idx::kPressCmdBinary, 0);
-  power_binary_out_ = canopen::BoundEntry<std::int32_t>(od, idx::kPowerCmdBinary, 0);
-  bus_status_out_ = canopen::BoundEntry<std::uint16_t>(od, idx::kBusStatus, 0);
-  discrete_inputs_out_ = canopen::BoundEntry<std::uint16_t>(od, idx::kDiscreteInputs, 0);
-  discrete_outputs_out_ = canopen::BoundEntry<std::uint16_t>(od, idx::kDiscreteOutputs, 0);
+  angle_binary_out_ = canopen::EntryRef<std::int32_t>(od, idx::kAngleCmdBinary, 0);
+  press_binary_out_ = canopen::EntryRef<std::int32_t>(od, idx::kPressCmdBinary, 0);
+  power_binary_out_ = canopen::EntryRef<std::int32_t>(od, idx::kPowerCmdBinary, 0);
+  bus_status_out_ = canopen::EntryRef<std::uint16_t>(od, idx::kBusStatus, 0);
+  discrete_inputs_out_ = canopen::EntryRef<std::uint16_t>(od, idx::kDiscreteInputs, 0);
+  discrete_outputs_out_ = canopen::EntryRef<std::uint16_t>(od, idx::kDiscreteOutputs, 0);
   if (settings_.builtin_plant) {
     builtin_.emplace(settings_.plant, settings_.pump_type);
     apply_plant_to_inputs();

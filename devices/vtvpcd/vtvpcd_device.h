@@ -12,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "devices/canopen/bound_entry.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/device.h"
 #include "devices/vtvpcd/builtin_pump_model.h"
 #include "devices/vtvpcd/card_parameters.h"
@@ -109,7 +109,7 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   /// change; the bytes are written every cycle all the same: a reset may have put the start value
   /// there meanwhile).
   struct EuReadout {
-    canopen::BoundEntry<std::int32_t> entry;
+    canopen::EntryRef<std::int32_t> entry;
     Scale scale;
     double last_eu = std::numeric_limits<double>::quiet_NaN();
     std::int32_t last_raw = 0;
@@ -123,8 +123,8 @@ class VtvpcdDevice final : public devices::Device, public canopen::Application {
   };
   std::array<EuReadout, 14> eu_out_{};  ///< by EU readout (EuSlot)
   /// The raw readouts: the binary set's table entries (INTEGER32) and three UNSIGNED16 words.
-  canopen::BoundEntry<std::int32_t> angle_binary_out_, press_binary_out_, power_binary_out_;
-  canopen::BoundEntry<std::uint16_t> bus_status_out_, discrete_inputs_out_, discrete_outputs_out_;
+  canopen::EntryRef<std::int32_t> angle_binary_out_, press_binary_out_, power_binary_out_;
+  canopen::EntryRef<std::uint16_t> bus_status_out_, discrete_inputs_out_, discrete_outputs_out_;
   sim::Duration cycle_debt_{0};
   bool previous_enable_ = true;
   bool initialising_ = false;                ///< from power-on / NMT 81h until the boot-up message

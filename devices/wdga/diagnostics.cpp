@@ -1,6 +1,6 @@
 #include "devices/wdga/diagnostics.h"
 
-#include "devices/profiles/cia406/od_value.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/wdga/wdga_object_dictionary.h"
 
 namespace wdga {
@@ -31,11 +31,11 @@ void Diagnostics::bind(cia406::StatusRecorder& recorder) {
     for (std::uint8_t sub = 0; sub <= 5; ++sub) {
       od.add_read_hook(index, sub, [this, index, sub](OdEntry& e, Origin) {
         if (index == obj::kErrorHistory) {
-          cia406::publish(e, sub == 0 ? error_count_ : errors_[sub - 1]);
+          canopen::EntryRef<std::uint32_t>(e).set(sub == 0 ? error_count_ : errors_[sub - 1]);
         } else if (index == obj::kAlarmHistory) {
-          cia406::publish(e, sub == 0 ? alarm_count_ : alarm_history_[sub - 1]);
+          canopen::EntryRef<std::uint32_t>(e).set(sub == 0 ? alarm_count_ : alarm_history_[sub - 1]);
         } else {
-          cia406::publish(e, sub == 0 ? warning_count_ : warning_history_[sub - 1]);
+          canopen::EntryRef<std::uint32_t>(e).set(sub == 0 ? warning_count_ : warning_history_[sub - 1]);
         }
         return SdoAbort::None;
       });

@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "devices/profiles/cia406/od_value.h"
 #include "devices/wdga/wdga_object_dictionary.h"
 
 namespace wdga {
@@ -19,13 +18,13 @@ Measurement::Measurement(canopen::ObjectDictionary& od, const Settings& settings
   config_.physical_revolutions = kPhysicalRevolutions;
   config_.multiturn = settings.multiturn;
   range_ = config_.effective_range();
-  position_ = canopen::BoundEntry<std::uint32_t>(od, obj::kPosition, 0);
-  position_high_ = canopen::BoundEntry<std::uint64_t>(od, obj::kPositionHigh, 0);
-  speed_ = canopen::BoundEntry<std::int16_t>(od, obj::kSpeed, 1);
-  acceleration_ = canopen::BoundEntry<std::int16_t>(od, obj::kAcceleration, 1);
-  jerk_ = canopen::BoundEntry<std::int16_t>(od, obj::kJerk, 1);
-  status_ = od.entry(obj::kOperatingStatus, 0);
-  offset_view_ = canopen::BoundEntry<std::int32_t>(od, obj::kOffset, 0);
+  position_ = canopen::EntryRef<std::uint32_t>(od, obj::kPosition, 0);
+  position_high_ = canopen::EntryRef<std::uint64_t>(od, obj::kPositionHigh, 0);
+  speed_ = canopen::EntryRef<std::int16_t>(od, obj::kSpeed, 1);
+  acceleration_ = canopen::EntryRef<std::int16_t>(od, obj::kAcceleration, 1);
+  jerk_ = canopen::EntryRef<std::int16_t>(od, obj::kJerk, 1);
+  status_ = canopen::EntryRef<std::uint16_t>::optional(od, obj::kOperatingStatus, 0);
+  offset_view_ = canopen::EntryRef<std::int32_t>(od, obj::kOffset, 0);
   cams_.bind(od);
   work_area_.bind(od);
 }
@@ -42,7 +41,7 @@ void Measurement::load_parameters() {
   units_per_rev_ = settings_.speed_physical_units ? static_cast<double>(kPhysicalResolution)
                                                   : static_cast<double>(config_.effective_units_per_revolution());
   range_ = config_.effective_range();
-  cia406::publish(*status_, config_.operating_parameters);
+  status_.set(config_.operating_parameters);
 }
 
 void Measurement::window_changed() {

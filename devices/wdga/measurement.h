@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "devices/canopen/bound_entry.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/profiles/cia406/cam_unit.h"
 #include "devices/profiles/cia406/motion_estimator.h"
@@ -68,11 +68,11 @@ class Measurement {
   std::uint64_t range_ = 1;     ///< config_.effective_range()
 
   // The process values, published in every cycle (6004h, 600Ch, 6030h, 6040h, 6050h, 6509h).
-  canopen::BoundEntry<std::uint32_t> position_;
-  canopen::BoundEntry<std::uint64_t> position_high_;
-  canopen::BoundEntry<std::int16_t> speed_, acceleration_, jerk_;
-  canopen::BoundEntry<std::int32_t> offset_view_;
-  canopen::OdEntry* status_ = nullptr;
+  canopen::EntryRef<std::uint32_t> position_;
+  canopen::EntryRef<std::uint64_t> position_high_;
+  canopen::EntryRef<std::int16_t> speed_, acceleration_, jerk_;
+  canopen::EntryRef<std::int32_t> offset_view_;
+  canopen::EntryRef<std::uint16_t> status_;
 };
 
 }  // namespace wdga

@@ -6,7 +6,7 @@
 #include "devices/canopen/lss_slave.h"
 #include "devices/canopen/pdo_service.h"
 #include "devices/canopen/store_restore.h"
-#include "devices/profiles/cia406/od_value.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/wdga/wdga_object_dictionary.h"
 
 namespace wdga {
@@ -81,7 +81,7 @@ void Application::bind_node_objects() {
     od.add_check(index, 0, preop_only, CheckStage::State);
     od.add_read_hook(index, 0, [this, index](OdEntry& e, Origin) {
       auto& lss = *node_.lss();
-      cia406::publish(e, index == obj::kNodeId ? lss.pending_node_id() : lss.pending_bit_rate());
+      canopen::EntryRef<std::uint8_t>(e).set(index == obj::kNodeId ? lss.pending_node_id() : lss.pending_bit_rate());
       return SdoAbort::None;
     });
     od.add_check(index, 0, [this, index](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {

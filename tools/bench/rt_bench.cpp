@@ -187,7 +187,7 @@ int run_heartbeat(double seconds, long tick_us, int competitors, bool rt, unsign
   profile.device_type = 0x191;
   canopen::add_communication_objects(od, profile);
   auto* hb = od.entry(0x1017, 0);
-  hb->default_value = hb->value = {static_cast<std::uint8_t>(period_ms), static_cast<std::uint8_t>(period_ms >> 8)};
+  hb->value = hb->default_value = {static_cast<std::uint8_t>(period_ms), static_cast<std::uint8_t>(period_ms >> 8)};
   canopen::Node node("bench", std::move(od), {}, kNodeId);
   sim::Bus bus("virtual");
   struct Observer : sim::FrameReceiver {

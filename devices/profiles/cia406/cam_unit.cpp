@@ -51,14 +51,14 @@ void CamUnit::add_objects(ObjectDictionary& od) {
 }
 
 void CamUnit::bind(ObjectDictionary& od, SdoAbort abort) {
-  state_ = canopen::BoundEntry<std::uint8_t>(od, kState, 1);
-  enable_ = canopen::BoundEntry<std::uint8_t>(od, kEnable, 1);
-  polarity_ = canopen::BoundEntry<std::uint8_t>(od, kPolarity, 1);
+  state_ = canopen::EntryRef<std::uint8_t>(od, kState, 1);
+  enable_ = canopen::EntryRef<std::uint8_t>(od, kEnable, 1);
+  polarity_ = canopen::EntryRef<std::uint8_t>(od, kPolarity, 1);
   for (int k = 0; k < kCams; ++k) {
     const auto low = static_cast<std::uint16_t>(kLowLimit + k);
-    low_[k] = canopen::BoundEntry<std::int32_t>(od, low, 1);
-    high_[k] = canopen::BoundEntry<std::int32_t>(od, static_cast<std::uint16_t>(kHighLimit + k), 1);
-    hysteresis_[k] = canopen::BoundEntry<std::uint32_t>(od, static_cast<std::uint16_t>(kHysteresis + k), 1);
+    low_[k] = canopen::EntryRef<std::int32_t>(od, low, 1);
+    high_[k] = canopen::EntryRef<std::int32_t>(od, static_cast<std::uint16_t>(kHighLimit + k), 1);
+    hysteresis_[k] = canopen::EntryRef<std::uint32_t>(od, static_cast<std::uint16_t>(kHysteresis + k), 1);
     const OdEntry* high = &high_[k].entry();
     od.add_check(low, 1, [high, abort](const OdEntry& e, std::span<std::uint8_t> data, Origin origin) {
       if (origin != Origin::Sdo) return SdoAbort::None;

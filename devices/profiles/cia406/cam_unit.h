@@ -8,7 +8,7 @@
 #include <array>
 #include <cstdint>
 
-#include "devices/canopen/bound_entry.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/object_dictionary.h"
 
 namespace cia406 {
@@ -43,9 +43,9 @@ class CamUnit {
  private:
   std::array<bool, kCams> inside_{};  ///< the cams' switching memories (kept whether enabled or not)
   // Read in every cycle, so a limit written by SDO or PDO, or reset, acts in the next one.
-  canopen::BoundEntry<std::uint8_t> state_, enable_, polarity_;
-  std::array<canopen::BoundEntry<std::int32_t>, kCams> low_{}, high_{};
-  std::array<canopen::BoundEntry<std::uint32_t>, kCams> hysteresis_{};
+  canopen::EntryRef<std::uint8_t> state_, enable_, polarity_;
+  std::array<canopen::EntryRef<std::int32_t>, kCams> low_{}, high_{};
+  std::array<canopen::EntryRef<std::uint32_t>, kCams> hysteresis_{};
 };
 
 }  // namespace cia406

@@ -26,9 +26,9 @@ void WorkArea::add_objects(canopen::ObjectDictionary& od, std::int32_t default_l
 }
 
 void WorkArea::bind(canopen::ObjectDictionary& od) {
-  state_ = canopen::BoundEntry<std::uint8_t>(od, kState, 1);
-  low_ = canopen::BoundEntry<std::int32_t>(od, kLowLimit, 1);
-  high_ = canopen::BoundEntry<std::int32_t>(od, kHighLimit, 1);
+  state_ = canopen::EntryRef<std::uint8_t>(od, kState, 1);
+  low_ = canopen::EntryRef<std::int32_t>(od, kLowLimit, 1);
+  high_ = canopen::EntryRef<std::int32_t>(od, kHighLimit, 1);
 }
 
 std::uint8_t WorkArea::update(std::int64_t x) {

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "devices/canopen/bound_entry.h"
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/object_dictionary.h"
 
 namespace cia406 {
@@ -27,8 +27,8 @@ class WorkArea {
 
  private:
   // Read in every cycle, so a limit written by SDO or PDO, or reset, acts in the next one.
-  canopen::BoundEntry<std::uint8_t> state_;
-  canopen::BoundEntry<std::int32_t> low_, high_;
+  canopen::EntryRef<std::uint8_t> state_;
+  canopen::EntryRef<std::int32_t> low_, high_;
 };
 
 }  // namespace cia406

@@ -1,6 +1,6 @@
 #include "devices/profiles/dsp408/channel_control.h"
 
-#include "devices/profiles/dsp408/od_value.h"
+#include "devices/canopen/entry_ref.h"
 
 namespace dsp408 {
 
@@ -25,7 +25,7 @@ ChannelObjects ChannelObjects::for_channel(int c, bool with_device_mode) {
 }
 
 ChannelControl::ChannelControl(canopen::ObjectDictionary& od, const ChannelObjects& objects)
-    : od_(od), objects_(objects), status_entry_(od.entry(objects.status_word, 0)) {
+    : od_(od), objects_(objects), status_entry_(canopen::EntryRef<std::uint16_t>::optional(od, objects.status_word, 0)) {
   install();
 }
 
@@ -52,7 +52,7 @@ void ChannelControl::install() {
   });
 
   od_.add_read_hook(objects_.status_word, 0, [this](OdEntry& e, Origin) {
-    put(e, status_word());
+    canopen::EntryRef<std::uint16_t>(e).set(status_word());
     return SdoAbort::None;
   });
 

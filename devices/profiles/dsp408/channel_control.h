@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 
+#include "devices/canopen/entry_ref.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/profile_status.h"
 #include "devices/profiles/dsp408/control_word.h"
@@ -102,13 +103,12 @@ class ChannelControl {
     return static_cast<std::uint16_t>(state_bits(s) | (source_ != ControlSource::Bus ? status::kLocal : 0u));
   }
   void store_status(std::uint16_t w) {
-    if (status_entry_->value.size() == 2 && canopen::decode_unsigned(status_entry_->value) == w) return;
-    canopen::encode_unsigned(w, status_entry_->value);
+    status_entry_.set(w);
   }
 
   canopen::ObjectDictionary& od_;
   ChannelObjects objects_;
-  canopen::OdEntry* status_entry_ = nullptr;  // 0x6041 of the channel, published every cycle
+  canopen::EntryRef<std::uint16_t> status_entry_;  // 0x6041 of the channel, published every cycle
   DeviceStateMachine dsm_;
   ControlSource source_ = ControlSource::Bus;
   bool paso_ = false;

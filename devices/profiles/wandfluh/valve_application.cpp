@@ -93,7 +93,7 @@ void ValveApplication::on_reset_communication() {
     canopen::Bytes kept[2];
     const std::uint16_t address_objects[2] = {NodeAddress::kNodeAddress, NodeAddress::kBitRate};
     for (int i = 0; i < 2; ++i) {
-      if (auto* e = node_.od().entry(address_objects[i], 0)) kept[i] = e->value;
+      if (auto* e = node_.od().entry(address_objects[i], 0)) kept[i] = e->value.bytes();
     }
     node_.store().load_area(0x2000, 0xFFFF);
     if (restore_keeps_address_) {  // as without a restore: the values in use (saved or not) stay

@@ -15,7 +15,7 @@ class BadInput : public Hlt1100Test {
   Snapshot snapshot() {
     Snapshot s;
     for (const auto& [index, object] : od().objects())
-      for (const auto& [sub, e] : object.entries) s[{index, sub}] = e.value;
+      for (const auto& [sub, e] : object.entries) s[{index, sub}] = e.value.bytes();
     return s;
   }
   struct State {

@@ -14,7 +14,7 @@ class BadInput : public WdgaTest {
   Snapshot snapshot() {
     Snapshot s;
     for (const auto& [index, object] : od().objects())
-      for (const auto& [sub, e] : object.entries) s[{index, sub}] = e.value;
+      for (const auto& [sub, e] : object.entries) s[{index, sub}] = e.value.bytes();
     return s;
   }
 };
