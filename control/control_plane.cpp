@@ -223,7 +223,8 @@ struct ControlPlane::Server {
   json node_json_now(std::size_t i) {
     std::vector<NodeStatus> nodes;
     cp.bridge_.nodes(nodes);
-    return node_json(node_names[i], bus_names[static_cast<std::size_t>(node_bus[i])], nodes[i]);
+    return node_json(node_names[i], bus_names[static_cast<std::size_t>(node_bus[i])], nodes[i],
+                     [this, i](std::uint16_t code) { return catalog.emcy_text(i, code); });
   }
 
   // ---- routes ---------------------------------------------------------------------------------
@@ -321,7 +322,8 @@ struct ControlPlane::Server {
       cp.bridge_.nodes(nodes);
       json a = json::array();
       for (std::size_t i = 0; i < nodes.size(); ++i)
-        a.push_back(node_json(node_names[i], bus_names[static_cast<std::size_t>(node_bus[i])], nodes[i]));
+        a.push_back(node_json(node_names[i], bus_names[static_cast<std::size_t>(node_bus[i])], nodes[i],
+                              [this, i](std::uint16_t code) { return catalog.emcy_text(i, code); }));
       reply(res, 200, a);
     }));
     router.add("GET", R"(/api/nodes/([^/]+))", guarded([this](const http::Request& req, http::Response& res) {

@@ -226,7 +226,8 @@ std::string EventHub::nodes_event(const std::vector<NodeStatus>& nodes) const {
   nlohmann::json a = nlohmann::json::array();
   for (std::size_t i = 0; i < nodes.size(); ++i) {
     const auto b = static_cast<std::size_t>(topo_.node_bus[i]);
-    a.push_back(node_json(topo_.node_names[i], topo_.bus_names[b], nodes[i]));
+    a.push_back(node_json(topo_.node_names[i], topo_.bus_names[b], nodes[i],
+                          [this, i](std::uint16_t code) { return catalog_.emcy_text(i, code); }));
   }
   return a.dump();
 }

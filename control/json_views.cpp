@@ -141,18 +141,19 @@ json device_json(const NodeStatus& s) {
 
 }  // namespace
 
-json node_json(const std::string& name, const std::string& bus, const NodeStatus& s) {
+json node_json(const std::string& name, const std::string& bus, const NodeStatus& s, const EmcyMeaning& meaning) {
   json emcy = json::array();
   const std::uint32_t n = std::min<std::uint32_t>(s.emcy_count, NodeStatus::kEmcyHistory);
   for (std::uint32_t k = s.emcy_count - n; k < s.emcy_count; ++k) {
     const auto& r = s.emcy[k % NodeStatus::kEmcyHistory];
-    char code[8];
-    std::snprintf(code, sizeof code, "%04X", r.code);
+    // The product's own meaning where its manual gives one (HLT 1100 FF00h: position error), else
+    // CiA 301's class; the code itself is the "code" field, not repeated here.
+    const auto own = meaning(r.code);
     emcy.push_back({{"t_us", r.t_us},
                     {"code", r.code},
                     {"register", r.error_register},
                     {"data", hex_string(r.data.data(), r.data.size())},
-                    {"text", std::string(code) + " " + std::string(canopen::emcy_code_text(r.code)) + "; register: " +
+                    {"text", std::string(own.empty() ? canopen::emcy_code_text(r.code) : own) + "; register: " +
                                  canopen::error_register_text(r.error_register)}});
   }
   return {{"name", name},

@@ -3,7 +3,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <functional>
 #include <string>
+#include <string_view>
 
 #include "control/live_state.h"
 #include "devices/canopen/frame_decoder.h"
@@ -14,7 +16,9 @@ namespace control {
 /// "INITIALISING", "PRE-OPERATIONAL", "OPERATIONAL", "STOPPED", or "OFF" when unpowered.
 std::string nmt_name(const NodeStatus& s);
 /// Node = {"name","node_id","bus","nmt","error_register","device":{...},"emcy":[...]}.
-nlohmann::json node_json(const std::string& name, const std::string& bus, const NodeStatus& s);
+/// A node's EMCY code in its product's words ("" when its manual gives none).
+using EmcyMeaning = std::function<std::string_view(std::uint16_t code)>;
+nlohmann::json node_json(const std::string& name, const std::string& bus, const NodeStatus& s, const EmcyMeaning& meaning);
 /// Frame = {"t_us","bus","id","ext","rtr","dlc","data","bytes","dir","service","node","text","candump"}
 /// ("data" "2B40600007000000", "bytes" the same spaced: "2B 40 60 00 07 00 00 00").
 nlohmann::json frame_json(const CapturedFrame& f, const std::string& bus, const canopen::DecodedFrame& d);

@@ -262,6 +262,8 @@ test('"magnet lost" on the HLT 1100: the decoded EMCY, then the fault cleared', 
   await byTestId('fault-inject-hlt-magnet_lost').click();
   await page.waitForSelector('[data-testid=active-faults] [data-testid^=active-fault-]');
   await page.waitForFunction(() => (document.querySelector('[data-testid=emcy-hlt]')?.textContent ?? '') !== '');
+  // The last EMCY in the product's words (the HLT 1100 manual's FF00h), the code said once.
+  assert.match((await byTestId('emcy-hlt').textContent()) ?? '', /^FF00h position error: no magnet detected; register: /);
   await page.waitForFunction(() => [...document.querySelectorAll('[data-testid=trace-table] tbody tr[data-service=EMCY] td.decoded')]
     .some((td) => /EMCY/.test(td.textContent ?? '')));
   const emcyText = await page.locator('[data-testid=trace-table] tbody tr[data-service=EMCY] td.decoded').first().textContent();
