@@ -118,11 +118,18 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
     std::lock_guard lk(c->mu_);
     if (c->node_ >= 0 && std::find(nodes.begin(), nodes.end(), c->node_) == nodes.end()) nodes.push_back(c->node_);
   }
+  // Read on the scheduler's thread, between ticks: values are copied as the dictionary stores them
+  // (a scalar inline, no allocation; one vector per node, sized once), the JSON is made here after.
   struct Tables {
     std::int64_t t_us = 0;
-    std::vector<std::vector<std::vector<std::uint8_t>>> values;  ///< per node in `nodes`, per catalog entry
-    std::vector<std::vector<canopen::ValueScaling>> scalings;    ///< the same, the product's documented unit
-    nlohmann::json faults = nlohmann::json::array();
+    std::vector<std::vector<canopen::StoredValue>> values;    ///< per node in `nodes`, per catalog entry
+    std::vector<std::vector<canopen::ValueScaling>> scalings;  ///< the same, the product's documented unit
+    struct Fault {
+      int id;
+      std::string summary;
+      std::int64_t since_us, until_us;
+    };
+    std::vector<Fault> faults;  ///< at most the bridge's bound of live faults
   };
   const auto& catalog = catalog_;
   auto& bridge = bridge_;
@@ -133,24 +140,29 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
         for (const int n : nodes) {
           auto& device = *c.world.nodes()[static_cast<std::size_t>(n)].device;
           const auto& od = device.node().od();
+          const auto& entries = catalog.entries(static_cast<std::size_t>(n));
           auto& v = t.values.emplace_back();
           auto& sc = t.scalings.emplace_back();
-          for (const auto& e : catalog.entries(static_cast<std::size_t>(n))) {
+          v.reserve(entries.size());
+          sc.reserve(entries.size());
+          for (const auto& e : entries) {
             const auto* entry = od.entry(e.index, e.sub);
-            v.push_back(entry ? entry->value.bytes() : std::vector<std::uint8_t>{});
+            v.push_back(entry ? entry->value : canopen::StoredValue{});
             sc.push_back(device.value_scaling(e.index, e.sub));
           }
         }
-        for (const auto& f : bridge.live_faults(t.t_us)) {
-          nlohmann::json j = {{"id", f.id}, {"summary", f.summary}, {"since_t_us", f.since_us}};
-          if (f.until_us >= 0) j["until_t_us"] = f.until_us;
-          t.faults.push_back(std::move(j));
-        }
+        for (const auto& f : bridge.live_faults(t.t_us)) t.faults.push_back({f.id, f.summary, f.since_us, f.until_us});
         return t;
       },
       kLiveTableWait);
   if (!tables) return;  // the scheduler is busy or the run ended: next time
-  const std::string faults = tables->faults.dump();
+  nlohmann::json fault_list = nlohmann::json::array();
+  for (const auto& f : tables->faults) {
+    nlohmann::json j = {{"id", f.id}, {"summary", f.summary}, {"since_t_us", f.since_us}};
+    if (f.until_us >= 0) j["until_t_us"] = f.until_us;
+    fault_list.push_back(std::move(j));
+  }
+  const std::string faults = fault_list.dump();
   for (std::size_t i = 0; i < clients.size(); ++i) {
     auto& c = *clients[i];
     std::lock_guard lk(c.mu_);
@@ -171,8 +183,9 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
       if (!full && values[e] == c.od_last_[e]) continue;
       c.od_last_[e] = values[e];
       const auto key = object_key(entries[e].index, entries[e].sub);
-      changed[key] = value_json(entries[e].type, values[e]);
-      if (auto text = display_text(entries[e].type, values[e], tables->scalings[k][e]); !text.empty()) display[key] = std::move(text);
+      const auto bytes = values[e].bytes();
+      changed[key] = value_json(entries[e].type, bytes);
+      if (auto text = display_text(entries[e].type, bytes, tables->scalings[k][e]); !text.empty()) display[key] = std::move(text);
     }
     c.od_sent_ = true;
     if (!full && changed.empty()) continue;

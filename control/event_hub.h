@@ -20,6 +20,7 @@
 #include "control/dictionary_catalog.h"
 #include "control/exercise_host.h"
 #include "control/sim_bridge.h"
+#include "devices/canopen/stored_value.h"
 
 namespace control {
 
@@ -51,7 +52,7 @@ class EventHub {
     bool shared_ = false;  ///< beyond max_clients: the shared read-only stream, a bounded backlog
     int node_ = -1;        ///< the node whose dictionary this client receives (-1: none)
     bool od_sent_ = false;
-    std::vector<std::vector<std::uint8_t>> od_last_;  ///< what it was sent, per catalog entry
+    std::vector<canopen::StoredValue> od_last_;  ///< what it was sent, per catalog entry
     std::string faults_sent_;
   };
 
