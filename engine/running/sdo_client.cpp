@@ -22,38 +22,34 @@ void SdoClient::send(std::initializer_list<std::uint8_t> head, const std::uint8_
   send_(f);
 }
 
-void SdoClient::start_upload(std::uint8_t node_id, std::uint16_t index, std::uint8_t sub, sim::Time now,
-                             sim::Duration timeout) {
+void SdoClient::begin(std::uint8_t node_id, std::uint16_t index, std::uint8_t sub, bool upload, sim::Time now,
+                      sim::Duration timeout) {
   node_id_ = node_id;
   index_ = index;
   sub_ = sub;
-  upload_ = true;
-  segmented_ = false;
+  upload_ = upload;
   toggle_ = false;
-  expected_size_ = 0;
-  data_.clear();
   abort_code_ = 0;
   error_.clear();
   timeout_ = timeout;
   deadline_ = now + timeout;
   state_ = State::Busy;
+}
+
+void SdoClient::start_upload(std::uint8_t node_id, std::uint16_t index, std::uint8_t sub, sim::Time now,
+                             sim::Duration timeout) {
+  begin(node_id, index, sub, true, now, timeout);
+  segmented_ = false;
+  expected_size_ = 0;
+  data_.clear();
   send({0x40, static_cast<std::uint8_t>(index), static_cast<std::uint8_t>(index >> 8), sub, 0, 0, 0, 0});
 }
 
 void SdoClient::start_download(std::uint8_t node_id, std::uint16_t index, std::uint8_t sub,
                                const std::vector<std::uint8_t>& data, sim::Time now, sim::Duration timeout) {
-  node_id_ = node_id;
-  index_ = index;
-  sub_ = sub;
-  upload_ = false;
-  toggle_ = false;
+  begin(node_id, index, sub, false, now, timeout);
   offset_ = 0;
   data_ = data;
-  abort_code_ = 0;
-  error_.clear();
-  timeout_ = timeout;
-  deadline_ = now + timeout;
-  state_ = State::Busy;
   const auto lo = static_cast<std::uint8_t>(index), hi = static_cast<std::uint8_t>(index >> 8);
   if (!data.empty() && data.size() <= 4) {
     segmented_ = false;

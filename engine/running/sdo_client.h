@@ -39,6 +39,9 @@ class SdoClient {
   void reset() { state_ = State::Idle; }
 
  private:
+  /// What an upload and a download set up alike: the object, the deadline, a clean state.
+  void begin(std::uint8_t node_id, std::uint16_t index, std::uint8_t sub, bool upload, sim::Time now,
+             sim::Duration timeout);
   void fail(std::uint32_t code, const std::string& why);
   void send(std::initializer_list<std::uint8_t> head, const std::uint8_t* tail = nullptr, std::size_t tail_len = 0);
   void next_download_segment();

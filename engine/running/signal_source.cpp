@@ -27,57 +27,40 @@ void FrameFieldStore::on_frame(int bus, const sim::CanFrame& f) {
   }
 }
 
+Signal::Signal(Kind kind, double scale, double offset, std::string name)
+    : kind_(kind), scale_(scale), offset_(offset), name_(std::move(name)) {}
+
 Signal Signal::port(const double* value, double scale, double offset, std::string name) {
-  Signal s;
-  s.kind_ = Kind::Port;
+  Signal s(Kind::Port, scale, offset, std::move(name));
   s.value_ = value;
-  s.scale_ = scale;
-  s.offset_ = offset;
-  s.name_ = std::move(name);
   return s;
 }
 
 Signal Signal::frame(const FrameFieldStore* store, int slot, FrameField field, double scale, double offset, std::string name) {
-  Signal s;
-  s.kind_ = Kind::Frame;
+  Signal s(Kind::Frame, scale, offset, std::move(name));
   s.store_ = store;
   s.slot_ = slot;
   s.field_ = field;
-  s.scale_ = scale;
-  s.offset_ = offset;
-  s.name_ = std::move(name);
   return s;
 }
 
 Signal Signal::nmt_state(const canopen::Node* node, double scale, double offset, std::string name) {
-  Signal s;
-  s.kind_ = Kind::Nmt;
+  Signal s(Kind::Nmt, scale, offset, std::move(name));
   s.node_ = node;
-  s.scale_ = scale;
-  s.offset_ = offset;
-  s.name_ = std::move(name);
   return s;
 }
 
 Signal Signal::bus_load(const sim::Bus* bus, double scale, double offset, std::string name) {
-  Signal s;
-  s.kind_ = Kind::BusLoad;
+  Signal s(Kind::BusLoad, scale, offset, std::move(name));
   s.bus_ = bus;
-  s.scale_ = scale;
-  s.offset_ = offset;
-  s.name_ = std::move(name);
   return s;
 }
 
 Signal Signal::bus_counter(const sim::Bus* bus, int endpoint, Counter counter, double scale, double offset, std::string name) {
-  Signal s;
-  s.kind_ = Kind::BusCounter;
+  Signal s(Kind::BusCounter, scale, offset, std::move(name));
   s.bus_ = bus;
   s.endpoint_ = endpoint;
   s.counter_ = counter;
-  s.scale_ = scale;
-  s.offset_ = offset;
-  s.name_ = std::move(name);
   return s;
 }
 

@@ -37,6 +37,7 @@ class FrameFieldStore {
 
 class Signal {
  public:
+  Signal() = default;  ///< no source: reads NaN (a member assigned later)
   static Signal port(const double* value, double scale, double offset, std::string name);
   static Signal frame(const FrameFieldStore* store, int slot, FrameField field, double scale, double offset, std::string name);
   static Signal nmt_state(const canopen::Node* node, double scale, double offset, std::string name);
@@ -74,7 +75,11 @@ class Signal {
   const std::string& name() const { return name_; }
 
  private:
-  enum class Kind { None, Port, Frame, Nmt, BusLoad, BusCounter } kind_ = Kind::None;
+  enum class Kind { None, Port, Frame, Nmt, BusLoad, BusCounter };
+  /// What every kind shares; the factories add what their kind reads.
+  Signal(Kind kind, double scale, double offset, std::string name);
+
+  Kind kind_ = Kind::None;
   const sim::Bus* bus_ = nullptr;
   int endpoint_ = 0;
   Counter counter_ = Counter::Tec;
