@@ -102,20 +102,35 @@ def wait_booted(port, seat, token, deadline):
         time.sleep(0.05)
 
 
-class TwoSeats(unittest.TestCase):
+class RoomTest(unittest.TestCase):
+    """A classroom of two seats for the whole class of tests, stopped cleanly (exit 0) after them."""
+
+    room_args = []
+
     @classmethod
     def setUpClass(cls):
-        cls.room = Classroom(2)
+        cls.room = Classroom(2, cls.room_args)
         cls.port = cls.room.port
         cls.t = cls.room.tokens
 
     @classmethod
     def tearDownClass(cls):
-        rc, out = cls.room.stop()
-        assert rc == 0, out
+        rc, cls.output = cls.room.stop()
+        assert rc == 0, cls.output
+
+    def progress(self, seat):
+        status, _, body = request(self.port, "GET", f"/seats/{seat}/api/exercise", token=self.t[seat])
+        self.assertEqual(status, 200, body)
+        return [step["done"] for step in body["steps"]]
+
+
+class TwoSeats(RoomTest):
+    @classmethod
+    def tearDownClass(cls):
+        super().tearDownClass()
         # The tokens appear on the start lines only, nowhere after them.
         for token in cls.t.values():
-            assert out.count(token) == 1, out
+            assert cls.output.count(token) == 1, cls.output
 
     def test_links_one_per_seat_and_the_trainer(self):
         self.assertEqual(sorted(self.t), [0, 1, 2])
@@ -204,24 +219,13 @@ class TwoSeats(unittest.TestCase):
         self.assertIn("Host", body["error"])
 
 
-class Exercises(unittest.TestCase):
+class Exercises(RoomTest):
     """The trainer gives every seat the same exercise; a trainee's steps are checked on their seat only."""
 
     @classmethod
     def setUpClass(cls):
-        cls.room = Classroom(2, ["--exercises", ARGS.exercises])
-        cls.port = cls.room.port
-        cls.t = cls.room.tokens
-
-    @classmethod
-    def tearDownClass(cls):
-        rc, out = cls.room.stop()
-        assert rc == 0, out
-
-    def progress(self, seat):
-        status, _, body = request(self.port, "GET", f"/seats/{seat}/api/exercise", token=self.t[seat])
-        self.assertEqual(status, 200, body)
-        return [step["done"] for step in body["steps"]]
+        cls.room_args = ["--exercises", ARGS.exercises]
+        super().setUpClass()
 
     def test_steps_are_done_on_the_seat_that_did_them_only(self):
         status, _, body = request(self.port, "GET", "/seats/1/api/exercises", token=self.t[1])
@@ -254,25 +258,14 @@ class Exercises(unittest.TestCase):
         self.assertFalse(any(st["done"] for st in seats[2]["steps"]))
 
 
-class Dsp408(unittest.TestCase):
+class Dsp408(RoomTest):
     """Issue 22's "done when": `dsp408` on both seats, seat 1's DSV driven to DEVICE_MODE_ACTIVE by
     SDO; seat 1's steps are done, none of seat 2's."""
 
     @classmethod
     def setUpClass(cls):
-        cls.room = Classroom(2, ["--exercises", ARGS.exercises])
-        cls.port = cls.room.port
-        cls.t = cls.room.tokens
-
-    @classmethod
-    def tearDownClass(cls):
-        rc, out = cls.room.stop()
-        assert rc == 0, out
-
-    def progress(self, seat):
-        status, _, body = request(self.port, "GET", f"/seats/{seat}/api/exercise", token=self.t[seat])
-        self.assertEqual(status, 200, body)
-        return [step["done"] for step in body["steps"]]
+        cls.room_args = ["--exercises", ARGS.exercises]
+        super().setUpClass()
 
     def dsp408_state(self, seat):
         status, _, body = request(self.port, "GET", f"/seats/{seat}/api/nodes/dsv/machines", token=self.t[seat])
