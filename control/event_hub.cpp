@@ -8,6 +8,8 @@
 #include "engine/running/world.h"
 #include "sim/scheduler.h"
 #include "control/server_thread_priority.h"
+#include "engine/running/master_findings.h"
+#include "engine/running/master_monitor.h"
 
 namespace control {
 
@@ -23,6 +25,8 @@ constexpr auto kLiveTableWait = std::chrono::milliseconds(150);
 // Frames decoded per batch: 40 000 a second, more than two 1 Mbit/s buses carry; beyond (full
 // virtual speed) the stream is a sample.
 constexpr std::size_t kMaxFramesPerBatch = 2048;
+// Findings per `findings` event: a burst beyond goes out over the next reads, 200 ms apart.
+constexpr std::size_t kFindingsPerEvent = 100;
 
 void append_event(std::string& out, const char* name, const std::string& data) {
   out += "event: ";
@@ -130,11 +134,15 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
       std::int64_t since_us, until_us;
     };
     std::vector<Fault> faults;  ///< at most the bridge's bound of live faults
+    std::string findings;       ///< the verdict's new findings as a page (GET /api/findings), "" for none
+    std::size_t findings_next = 0;
   };
   const auto& catalog = catalog_;
   auto& bridge = bridge_;
+  const std::size_t findings_from = findings_next_;
+  const std::uint64_t restarts = restarts_seen_;
   auto tables = bridge_.call<Tables>(
-      [nodes, &catalog, &bridge](const scenario::RunContext& c) {
+      [nodes, &catalog, &bridge, findings_from, restarts](const scenario::RunContext& c) {
         Tables t;
         t.t_us = c.scheduler.now().time_since_epoch().count();
         for (const int n : nodes) {
@@ -152,6 +160,13 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
           }
         }
         for (const auto& f : bridge.live_faults(t.t_us)) t.faults.push_back({f.id, f.summary, f.since_us, f.until_us});
+        // A run restarted since the hub last looked starts its findings at 0: the next batch
+        // resets the cursor, this read leaves them.
+        t.findings_next = findings_from;
+        if (const auto* m = c.master_monitor; m && bridge.restarts() == restarts && m->findings().size() > findings_from) {
+          t.findings = scenario::findings_json(m->findings(), m->rules(), m->bus_names(), findings_from, kFindingsPerEvent);
+          t.findings_next = std::min(m->findings().size(), findings_from + kFindingsPerEvent);
+        }
         return t;
       },
       kLiveTableWait);
@@ -163,6 +178,9 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
     fault_list.push_back(std::move(j));
   }
   const std::string faults = fault_list.dump();
+  // One line of JSON per SSE data field (the page's newlines are only between its items).
+  std::replace(tables->findings.begin(), tables->findings.end(), '\n', ' ');
+  findings_next_ = tables->findings_next;
   for (std::size_t i = 0; i < clients.size(); ++i) {
     auto& c = *clients[i];
     std::lock_guard lk(c.mu_);
@@ -170,6 +188,7 @@ void EventHub::live_tables(const std::vector<std::shared_ptr<Client>>& clients, 
       c.faults_sent_ = faults;
       append_event(out[i], "faults", faults);
     }
+    if (!tables->findings.empty()) append_event(out[i], "findings", tables->findings);
     if (c.node_ < 0) continue;
     const auto k = static_cast<std::size_t>(std::find(nodes.begin(), nodes.end(), c.node_) - nodes.begin());
     if (k >= tables->values.size()) continue;  // selected since the read
@@ -352,6 +371,7 @@ void EventHub::batch() {
   const auto restarts = bridge_.restarts();
   const bool restarted = restarts != restarts_seen_;
   restarts_seen_ = restarts;
+  if (restarted) findings_next_ = 0;
 
   const bool exercise_changed = refresh_exercise();
 

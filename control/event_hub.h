@@ -6,7 +6,8 @@
 // than the newest batch-long stretch of simulated time (decoding costs the same at any speed).
 // Every 20 ms it asks the scheduler for a node snapshot (the scheduler
 // takes none on its own while the clock runs). The exercise's state goes out as an `exercise`
-// event on connect and whenever the selection or a step's done-state changed.
+// event on connect and whenever the selection or a step's done-state changed. New findings of
+// the verdict on the master go out as `findings` pages (GET /api/findings gives the earlier ones).
 #pragma once
 
 #include <condition_variable>
@@ -102,6 +103,7 @@ class EventHub {
   // Hub thread state.
   std::uint64_t node_version_ = ~0ULL, pdo_version_ = ~0ULL, dropped_seen_ = 0;
   std::uint64_t restarts_seen_ = 0;
+  std::size_t findings_next_ = 0;  ///< the first finding of the master monitor not streamed yet
   std::uint64_t exercise_version_ = ~0ULL;
   std::string exercise_event_;  ///< the exercise's state as last sent ("" before the first read)
   std::uint64_t next_id_ = 0;

@@ -80,6 +80,8 @@ export interface StreamHandlers {
   faults(f: ActiveFault[]): void;
   /** The exercise and its progress (GET /api/exercise's body): on connect, on a selection, when a step is done. */
   exercise(e: ExerciseState): void;
+  /** New findings of the verdict on the master, as a GET /api/findings page. */
+  findings(page: FindingsPage): void;
   connection(open: boolean): void;
 }
 
@@ -101,6 +103,7 @@ export function openStream(signals: readonly string[], rateHz: number, node: str
   on('od', h.od);
   on('faults', h.faults);
   on('exercise', h.exercise);
+  on('findings', h.findings);
   es.onopen = () => h.connection(true);
   es.onerror = () => h.connection(false);
   return es;

@@ -242,6 +242,7 @@ async function main(): Promise<void> {
   function afterRestart(): void {
     store.forgetHistory();
     trace.buffer.clear();
+    findings.clear();
     if (store.selected) {
       void loadMachines(store.selected);
       void loadTransitions(store.selected);
@@ -297,11 +298,21 @@ async function main(): Promise<void> {
     }
   }
   const findings = new FindingsView($('findings'));
-  async function refreshFindings(): Promise<void> {
+  // The findings so far, page by page (on connect, after a gap); new ones come on the stream.
+  let readingFindings = false;
+  async function readFindings(): Promise<void> {
+    if (readingFindings) return;
+    readingFindings = true;
     try {
-      findings.show(await api.findings(findings.since));
+      for (let i = 0; i < 100; ++i) {  // bounded: the monitor stores a bounded number of findings
+        const page = await api.findings(findings.since);
+        findings.show(page);
+        if (page.next >= page.total || page.findings.length === 0) break;
+      }
     } catch {
       // a run without a master monitor, or the run has ended: nothing to add
+    } finally {
+      readingFindings = false;
     }
   }
 
@@ -351,12 +362,16 @@ async function main(): Promise<void> {
       },
       faults: (f) => faults.showActive(f),
       exercise: (e) => exercise.show(e),
+      findings: (page) => {
+        if (!findings.show(page)) void readFindings();
+      },
       connection: (open) => {
         const s = $('connection');
         s.textContent = open ? 'live' : 'disconnected';
         s.dataset.open = String(open);
         // after a reconnect, what the stream missed meanwhile
         if (open && store.selected) void loadTransitions(store.selected);
+        if (open) void readFindings();
       },
     });
   }
@@ -385,8 +400,7 @@ async function main(): Promise<void> {
   onSelected();
   const exercise = mountExerciseView(document.querySelector('main') ?? document.body);
   connect(plotDefault);
-  // The verdict has no stream event; a shared read-only stream carries no dictionary.
-  setInterval(() => void refreshFindings(), 2000);
+  // A shared read-only stream carries no dictionary (its backlog is kept small): it reads it.
   setInterval(() => { if (streamShared && !lesson) void refreshOd(); }, 1000);
 }
 

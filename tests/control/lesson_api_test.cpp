@@ -264,80 +264,47 @@ namespace {
 
 TEST(LessonStream, CarriesTheSelectedNodesDictionaryAsDeltasFaultsAndSharesBeyondFourViewers) {
   LivePlant p(scenario::load_scenario_file(VPLANT_REFERENCE_PLANT), scenario::default_environment(), 2);
-  struct Reader {
-    std::string text;
-    std::mutex mu;
-    std::atomic<bool> stop{false};
-    std::unique_ptr<httplib::Client> client;
-    std::thread thread;
-    std::string snapshot() {
-      std::lock_guard lk(mu);
-      return text;
-    }
-  };
-  const auto open = [&](Reader& r, const std::string& query) {
-    r.client = std::make_unique<httplib::Client>("127.0.0.1", p.port());
-    r.client->set_read_timeout(5, 0);
-    r.thread = std::thread([&r, query] {
-      r.client->Get(("/api/events" + query).c_str(), [&r](const char* data, std::size_t n) {
-        std::lock_guard lk(r.mu);
-        r.text.append(data, n);
-        return !r.stop.load();
-      });
-    });
-  };
-  const auto wait_for = [](Reader& r, const std::string& what) {
-    for (int i = 0; i < 150 && r.snapshot().find(what) == std::string::npos; ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    return r.snapshot().find(what) != std::string::npos;
-  };
-  Reader a, b, shared;
-  open(a, "?node=dsv");
-  open(b, "");
-  ASSERT_TRUE(wait_for(a, "event: od"));
-  EXPECT_TRUE(wait_for(a, "\"full\":true"));
-  EXPECT_NE(a.snapshot().find("\"6040:00\":"), std::string::npos);
-  EXPECT_NE(a.snapshot().find("\"node\":\"dsv\""), std::string::npos);
-  EXPECT_NE(a.snapshot().find("event: hello"), std::string::npos);
-  EXPECT_TRUE(wait_for(a, "event: faults"));
+  vtest::StreamCapture a(p.port(), "?node=dsv");
+  vtest::StreamCapture b(p.port(), "");
+  ASSERT_TRUE(a.wait_for("event: od"));
+  EXPECT_TRUE(a.wait_for("\"full\":true"));
+  EXPECT_NE(a.text().find("\"6040:00\":"), std::string::npos);
+  EXPECT_NE(a.text().find("\"node\":\"dsv\""), std::string::npos);
+  EXPECT_NE(a.text().find("event: hello"), std::string::npos);
+  EXPECT_TRUE(a.wait_for("event: faults"));
   // A delta: only what changed (the control word written by SDO).
   ASSERT_EQ(p.post("/api/nodes/dsv/sdo", {{"index", 0x6040}, {"value", 1}})->status, 200);
-  EXPECT_TRUE(wait_for(a, "\"full\":false,\"node\":\"dsv\""));
-  const auto text = a.snapshot();
+  EXPECT_TRUE(a.wait_for("\"full\":false,\"node\":\"dsv\""));
+  const auto text = a.text();
   const auto delta = text.find("\"full\":false");
   const auto end = text.find("\n", delta);
   EXPECT_NE(text.substr(delta, end - delta).find("\"6040:00\":1"), std::string::npos) << text.substr(delta, end - delta);
   EXPECT_EQ(text.substr(delta, end - delta).find("\"1000:00\""), std::string::npos);  // unchanged: not sent
 
   // b chooses a node by its stream id.
-  ASSERT_TRUE(wait_for(b, "event: hello"));
-  const auto hello = b.snapshot();
+  ASSERT_TRUE(b.wait_for("event: hello"));
+  const auto hello = b.text();
   const auto at = hello.find("\"stream\":") + 9;
   const auto id = std::stoull(hello.substr(at));
   auto r = p.post("/api/events/node", {{"stream", id}, {"node", "hlt"}});
   ASSERT_EQ(r->status, 200) << r->body;
-  EXPECT_TRUE(wait_for(b, "\"node\":\"hlt\""));
+  EXPECT_TRUE(b.wait_for("\"node\":\"hlt\""));
   EXPECT_EQ(p.post("/api/events/node", {{"stream", 999}, {"node", "hlt"}})->status, 404);
   EXPECT_EQ(p.post("/api/events/node", {{"stream", id}, {"node", "ghost"}})->status, 404);
   EXPECT_EQ(p.post("/api/events/node", {{"stream", id}})->status, 400);
   EXPECT_EQ(p.http().Get("/api/events?node=ghost")->status, 404);
 
   // Beyond max_streams (2 here): a shared read-only stream, not a refusal.
-  open(shared, "?node=dsv&signals=cyl.position");
-  ASSERT_TRUE(wait_for(shared, "\"shared\":true"));
-  EXPECT_TRUE(wait_for(shared, "event: nodes"));
+  vtest::StreamCapture shared(p.port(), "?node=dsv&signals=cyl.position");
+  ASSERT_TRUE(shared.wait_for("\"shared\":true"));
+  EXPECT_TRUE(shared.wait_for("event: nodes"));
   p.run_ms(50);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  EXPECT_EQ(shared.snapshot().find("event: od"), std::string::npos);
-  EXPECT_EQ(shared.snapshot().find("event: signals"), std::string::npos);
-  const auto shared_hello = shared.snapshot();
+  EXPECT_EQ(shared.text().find("event: od"), std::string::npos);
+  EXPECT_EQ(shared.text().find("event: signals"), std::string::npos);
+  const auto shared_hello = shared.text();
   const auto sid = std::stoull(shared_hello.substr(shared_hello.find("\"stream\":") + 9));
   EXPECT_EQ(p.post("/api/events/node", {{"stream", sid}, {"node", "hlt"}})->status, 404);
-
-  for (auto* r : {&a, &b, &shared}) {
-    r->stop = true;
-    r->thread.join();
-  }
 }
 
 }  // namespace

@@ -133,6 +133,12 @@ class StreamCapture {
     std::lock_guard lk(mu_);
     return text_;
   }
+  /// Waits up to 3 s (wall time: the hub sends on its own clock) until the text holds `what`.
+  bool wait_for(const std::string& what) {
+    for (int i = 0; i < 150 && text().find(what) == std::string::npos; ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    return text().find(what) != std::string::npos;
+  }
   void stop() {
     stop_ = true;
     if (reader_.joinable()) reader_.join();

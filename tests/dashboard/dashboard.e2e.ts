@@ -434,6 +434,16 @@ test('an SDO to a STOPPED node says timeout, not refused', async () => {
   await byTestId('nmt-target').selectOption('');
 });
 
+test('an NMT command to a node that is not on the bus is a finding on the master, streamed', async () => {
+  // The frame goes out as the master's (POST /api/frames); the verdict's finding reaches the page on the stream.
+  await page.evaluate(() => fetch('/api/frames', {
+    method: 'POST', headers: { 'Content-Type': 'application/json' }, body: '{"bus":"main","id":"0x000","data":"0109"}',
+  }));
+  await page.waitForSelector('[data-testid=findings] li[data-rule=nmt-unknown-node]', { state: 'attached' });
+  await page.waitForFunction(() => /nmt-unknown-node \(\w+\): 1/.test(document.querySelector('[data-testid=findings-summary]')?.textContent ?? ''));
+  assert.equal(await page.locator('[data-testid=findings] li[data-rule=nmt-unknown-node]').count(), 1, 'shown once');
+});
+
 test('Restart brings every node back to its boot-up', async () => {
   autoResume = false;
   await byTestId('restart').click();
@@ -458,6 +468,8 @@ test('Restart brings every node back to its boot-up', async () => {
     const rows = [...document.querySelectorAll('[data-testid=transition-list] tbody tr')].map((tr) => tr.textContent ?? '');
     return rows.some((r) => r.startsWith('0.000 s') && r.includes('OFF → INITIALISING')) && !rows.some((r) => r.includes('DEVICE_MODE_ACTIVE'));
   });
+  // The old run's findings are gone with it.
+  assert.equal(await page.locator('[data-testid=findings] li[data-rule=nmt-unknown-node]').count(), 0);
   await page.screenshot({ path: join(screenshots!, 'restart.png') });
 });
 

@@ -1,5 +1,7 @@
-// The verdict on the master (GET /api/findings): per rule its count, then each finding with its
-// time, node, text and evidence frames, newest last. Fetched page by page as findings come.
+// The verdict on the master: per rule its count, then each finding with its time, node, text and
+// evidence frames, newest last. New findings come on the stream (`findings` pages); the earlier
+// ones are read once, page by page, from GET /api/findings?since=. A page may overlap what is
+// shown (the stream and a read cross): each finding is shown once, by its index in the run.
 import { el, formatTime } from '../dom';
 import type { FindingsPage, MasterFinding } from '../types';
 
@@ -20,15 +22,26 @@ export class FindingsView {
     return this.next;
   }
 
-  show(page: FindingsPage): void {
-    for (const f of page.findings) this.list.append(this.item(f));
+  /** False when the page starts after what is shown (findings between are missing: read them). */
+  show(page: FindingsPage): boolean {
+    const first = page.next - page.findings.length;
+    if (first > this.next) return false;
+    for (const f of page.findings.slice(this.next - first)) this.list.append(this.item(f));
     while (this.list.childElementCount > kMaxShown) this.list.firstElementChild?.remove();
-    this.next = page.next;
+    this.next = Math.max(this.next, page.next);
     const counted = Object.entries(page.rules).filter(([, r]) => r.count > 0);
     this.summary.textContent = counted.length === 0
       ? 'no findings'
       : counted.map(([rule, r]) => `${rule} (${r.severity}): ${r.count}`).join(', ') +
         (page.dropped > 0 ? `; ${page.dropped} not stored` : '');
+    return true;
+  }
+
+  /** A restarted run: its findings start at 0. */
+  clear(): void {
+    this.list.replaceChildren();
+    this.next = 0;
+    this.summary.textContent = 'no findings';
   }
 
   private item(f: MasterFinding): HTMLElement {
