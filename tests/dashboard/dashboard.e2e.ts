@@ -187,6 +187,25 @@ test('control word 0x0007 by SDO drives the DSV to DEVICE_MODE_ACTIVE', async ()
   await shot('dsv-active', 'detail-section');
 });
 
+/** Pairs of a diagram's labels that cover each other or a state box (SVG user units, as drawn). */
+async function labelCollisions(p: Page, testid: string): Promise<string[]> {
+  return p.$$eval(`[data-testid=${testid}]`, (roots) => {
+    const out: string[] = [];
+    for (const root of roots) {
+      const box = (e: Element) => (e as SVGGraphicsElement).getBBox();
+      const hit = (a: DOMRect, b: DOMRect) => Math.min(a.x + a.width, b.x + b.width) - Math.max(a.x, b.x) > 0.5 &&
+        Math.min(a.y + a.height, b.y + b.height) - Math.max(a.y, b.y) > 0.5;
+      const labels = [...root.querySelectorAll('.edge-label')].map((e) => ({ name: e.textContent ?? '', b: box(e) }));
+      const states = [...root.querySelectorAll('.state rect')].map((e) => ({ name: e.parentElement?.getAttribute('data-state') ?? '', b: box(e) }));
+      labels.forEach((l, i) => {
+        for (const o of labels.slice(i + 1)) if (hit(l.b, o.b)) out.push(`${l.name} / ${o.name}`);
+        for (const s of states) if (hit(l.b, s.b)) out.push(`${l.name} / state ${s.name}`);
+      });
+    }
+    return out;
+  });
+}
+
 test('exercise 2 step 2: one write of 0x0000 from DEVICE_MODE_ACTIVE highlights TR_5, TR_6, TR_7, each on its own', async () => {
   await byTestId('node-row-dsv').click();
   await page.waitForSelector('[data-testid=diagram-dsp408] [data-state=DEVICE_MODE_ACTIVE][data-current=true]');
@@ -203,6 +222,9 @@ test('exercise 2 step 2: one write of 0x0000 from DEVICE_MODE_ACTIVE highlights 
   assert.deepEqual(rows.map((r) => r.tr), ['TR_7', 'TR_6', 'TR_5']);
   for (const r of rows) assert.match(r.cause, /0x0000/);
   assert.match((await byTestId('last-change-dsp408').textContent()) ?? '', /TR_5, TR_6, TR_7/);
+  // Every label legible: none covers another or a state (the numbered steps included).
+  assert.deepEqual(await labelCollisions(page, 'diagram-dsp408'), []);
+  assert.deepEqual(await labelCollisions(page, 'diagram-nmt'), []);
   await shot('dsv-tr567', 'detail-section');
   // And back: 0x0007 from INIT walks TR_2, TR_3, TR_4.
   await byTestId('cw-preset-0x0007').click();
@@ -539,6 +561,8 @@ test('no panel overlaps another at 1366×768 and 1920×1080, 100 % and 150 %; th
             assert.ok(diagram.h >= 120 && diagram.y >= detail.y && diagram.bottom <= detail.y + detail.h + 1,
               `${name}: the DSP 408 diagram is not whole in its panel: ${JSON.stringify([diagram, detail])}`);
             assert.ok(L.scrollHeight <= L.innerHeight + 1, `${name}: the lesson view scrolls (${L.scrollHeight} > ${L.innerHeight})`);
+            // the large drawing's labels: none covers another or a state
+            assert.deepEqual(await labelCollisions(p, 'diagram-dsp408'), [], `${name}: labels overlap`);
             // The diagram is the largest thing on the screen, its state names legible from a
             // projector (the font as rendered, after the drawing is scaled to its panel).
             const drawn = await p.evaluate(() => {

@@ -1,8 +1,10 @@
 // Draws a state machine as the C++ profile describes it (GET /api/nodes/{n}/machines): states on
 // the grid of their row/col hints, edges named by their transition with the condition on hover.
 // The current state is filled; each step of the latest change is drawn bold and numbered.
+// Labels are placed so that none covers another or a state (label_placement.ts).
 // States carry data-state / data-current, edges data-transition / data-step, for tests and readers.
 import { svg } from '../dom';
+import { labelWidth, placeLabels, type Box, type LabelRequest } from '../label_placement';
 import type { Machine, MachineEdge, Transition } from '../types';
 
 /** The grid and the boxes. `large` (the lesson view, a projector): the state names in 17 px
@@ -69,6 +71,10 @@ export function renderMachine(m: Machine, current: ReadonlySet<string>, chain: r
   // Several edges between one pair of states fan out: the n-th bends further.
   const seenPairs = new Map<string, number>();
   const edges = svg('g', {}), marked = svg('g', {});
+  // The label fonts of style.css (.edge-label, .edge.last .edge-label; larger in the lesson view).
+  const fontPx = large ? 13 : 10, lastFontPx = large ? 16 : 12;
+  const drawn: { e: MachineEdge; n: number | undefined; label: string; d: string }[] = [];
+  const requests: LabelRequest[] = [];
   for (const e of m.edges) {
     const a = at.get(e.from), b = at.get(e.to);
     if (!a || !b || a === b) continue;
@@ -85,14 +91,23 @@ export function renderMachine(m: Machine, current: ReadonlySet<string>, chain: r
     const [x2, y2] = boxExit(geo, b.x, b.y, boxWidth(geo, e.to), mx, my);
     const n = step.get(edgeId(e));
     const label = n === undefined ? e.transition : `${n}: ${e.transition}`;
+    const font = n === undefined ? fontPx : lastFontPx;
+    drawn.push({ e, n, label, d: `M ${x1} ${y1} Q ${mx} ${my} ${x2} ${y2}` });
+    requests.push({ p1: { x: x1, y: y1 }, c: { x: mx, y: my }, p2: { x: x2, y: y2 }, normal: { x: nx, y: ny },
+      width: labelWidth(label, font, n !== undefined), height: font, first: n !== undefined });
+  }
+  const boxes: Box[] = [...at.values()].map(({ x, y, s }) => {
+    const w = boxWidth(geo, s.name);
+    return { x0: x - w / 2, y0: y - BOX_H / 2, x1: x + w / 2, y1: y + BOX_H / 2 };
+  });
+  const places = placeLabels(requests, boxes);
+  drawn.forEach(({ e, n, label, d }, i) => {
     const g = svg('g', { class: n === undefined ? 'edge' : 'edge last', 'data-transition': e.transition, 'data-edge': edgeId(e), 'data-step': n },
       svg('title', {}, `${e.transition} (${e.from} → ${e.to}): ${e.condition}`),
-      svg('path', { d: `M ${x1} ${y1} Q ${mx} ${my} ${x2} ${y2}`, 'marker-end': `url(#${n === undefined ? 'arrow-' : 'arrow-last-'}${id})` }),
-      // the label beside the curve's middle, on the outer side of its bend
-      svg('text', { x: (x1 + 2 * mx + x2) / 4 + nx * 4, y: (y1 + 2 * my + y2) / 4 + ny * 4 + 4, class: 'edge-label',
-        'text-anchor': Math.abs(nx) > 0.5 ? (nx > 0 ? 'start' : 'end') : 'middle' }, label));
+      svg('path', { d, 'marker-end': `url(#${n === undefined ? 'arrow-' : 'arrow-last-'}${id})` }),
+      svg('text', { x: places[i].x, y: places[i].y, class: 'edge-label', 'text-anchor': places[i].anchor }, label));
     (n === undefined ? edges : marked).append(g);
-  }
+  });
   root.append(edges, marked);  // the marked steps over the others
   for (const { x, y, s } of at.values()) {
     const w = boxWidth(geo, s.name);
