@@ -17,7 +17,8 @@ json signal_json(const std::string& name, const std::string& unit, const sim::Di
           {"unit", unit},
           {"display_unit", own ? std::string(display.unit) : unit},
           {"display_scale", own ? display.scale : 1.0},
-          {"display_offset", own ? display.offset : 0.0}};
+          {"display_offset", own ? display.offset : 0.0},
+          {"display_span", own ? display.span : 0.0}};
 }
 
 json value_json(canopen::DataType type, const std::vector<std::uint8_t>& bytes) {

@@ -22,7 +22,8 @@ nlohmann::json node_json(const std::string& name, const std::string& bus, const 
 /// Frame = {"t_us","bus","id","ext","rtr","dlc","data","bytes","dir","service","node","text","candump"}
 /// ("data" "2B40600007000000", "bytes" the same spaced: "2B 40 60 00 07 00 00 00").
 nlohmann::json frame_json(const CapturedFrame& f, const std::string& bus, const canopen::DecodedFrame& d);
-/// Signal = {"name","unit" (SI),"display_unit","display_scale","display_offset"}: display = si × scale + offset.
+/// Signal = {"name","unit" (SI),"display_unit","display_scale","display_offset","display_span"}:
+/// display = si × scale + offset; a plot's axis spans at least display_span (0: any).
 nlohmann::json signal_json(const std::string& name, const std::string& unit, const sim::DisplayUnit& display);
 std::string hex_string(const std::uint8_t* data, std::size_t n);
 /// A dictionary value as JSON: numbers for numeric types, text for visible strings, hex else.

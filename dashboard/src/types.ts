@@ -75,6 +75,8 @@ export interface SignalInfo {
   display_unit: string;
   display_scale: number;
   display_offset: number;
+  /** The smallest range a plot's axis spans, in the display unit (0: any; absent from older servers). */
+  display_span?: number;
 }
 
 /** One entry of a node's transition history (GET /api/nodes/{n}/transitions, the stream's `transition`). */

@@ -59,6 +59,17 @@ export function formatReading(v: number): string {
   return fixed(v, Math.min(12, 3 - Math.floor(Math.log10(a))));
 }
 
+/** A plot's y range when the data moves less than the signal's span (the server's
+ *  `display_span`): that span, centred on the data. Null: the data span enough (or the signal has
+ *  no span, or no data yet), the plot chooses. */
+export function restingRange(min: number | null, max: number | null, s: SignalInfo): [number, number] | null {
+  const span = s.display_span ?? 0;
+  if (!(span > 0) || min === null || max === null || !Number.isFinite(min) || !Number.isFinite(max)) return null;
+  if (max - min >= span) return null;
+  const mid = (min + max) / 2;
+  return [mid - span / 2, mid + span / 2];
+}
+
 /** "125.3 bar": a value in SI shown in the signal's display unit. */
 export function formatSignal(si: number, s: SignalInfo): string {
   const u = unitLabel(s);

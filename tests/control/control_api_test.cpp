@@ -63,6 +63,8 @@ TEST_F(ControlApi, ScenarioListsBusesNodesSignalsFaultsAndInputs) {
   EXPECT_EQ(signals["cyl.position"]["display_unit"], "mm");
   EXPECT_DOUBLE_EQ(signals["cyl.position"]["display_scale"].get<double>(), 1000.0);
   EXPECT_DOUBLE_EQ(signals["cyl.position"]["display_offset"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(signals["cyl.position"]["display_span"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(signals["p_supply.pressure"]["display_span"].get<double>(), 1.0);
   for (const auto& [name, sig] : signals) {
     EXPECT_FALSE(sig["unit"].get<std::string>().empty()) << name;
     EXPECT_FALSE(sig["display_unit"].get<std::string>().empty()) << name;

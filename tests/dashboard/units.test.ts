@@ -1,6 +1,6 @@
 import assert from 'node:assert/strict';
 import { test } from 'node:test';
-import { decimalsFor, formatReading, formatSignal, fromDisplay, signalInfo, tickLabels, toDisplay, unitLabel } from '../../dashboard/src/units';
+import { decimalsFor, formatReading, formatSignal, fromDisplay, restingRange, signalInfo, tickLabels, toDisplay, unitLabel } from '../../dashboard/src/units';
 import type { SignalInfo } from '../../dashboard/src/types';
 
 const pressure: SignalInfo = { name: 'p_supply.pressure', unit: 'Pa', display_unit: 'bar', display_scale: 1e-5, display_offset: 0 };
@@ -46,4 +46,14 @@ test('axis ticks: one format per axis, no e-notation, no two ticks alike', () =>
   assert.equal(new Set(labels).size, 3);
   assert.ok(labels.every((l) => !/e/i.test(l)));
   assert.deepEqual(tickLabels([]), []);
+});
+
+test('a signal at rest spans its display_span about its level; one that moves, the plot\'s own range', () => {
+  const bar: SignalInfo = { ...pressure, display_span: 1 };
+  const r = restingRange(-0.00702, -0.00335, bar)!;
+  assert.ok(Math.abs(r[0] - -0.505185) < 1e-9 && Math.abs(r[1] - 0.494815) < 1e-9, String(r));
+  assert.equal(restingRange(0, 210, bar), null);
+  assert.equal(restingRange(null, null, bar), null, 'no data yet');
+  assert.equal(restingRange(-0.007, -0.003, pressure), null, 'a server without spans: the plot chooses');
+  assert.equal(restingRange(1, 1, { ...bar, display_span: 0 }), null);
 });

@@ -4,7 +4,7 @@ import uPlot from 'uplot';
 import { el } from '../dom';
 import { SignalSeries } from '../signal_series';
 import type { SignalBatch, SignalInfo } from '../types';
-import { formatSignal, signalInfo, tickLabels, toDisplay, unitLabel } from '../units';
+import { formatSignal, restingRange, signalInfo, tickLabels, toDisplay, unitLabel } from '../units';
 
 const WINDOW_US = 10_000_000;
 
@@ -29,7 +29,8 @@ export class Plots {
         const next = box.checked ? [...this.chosen, name] : this.chosen.filter((n) => n !== name);
         onChange(next);
       });
-      const u = unitLabel(this.info(name));
+      const info = this.info(name);
+      const u = unitLabel(info);
       picker.append(el('label', {}, box, ` ${name}${u ? ` [${u}]` : ''}`));
     }
     host.replaceChildren(picker, this.grid);
@@ -63,7 +64,8 @@ export class Plots {
     this.charts.clear();
     this.grid.replaceChildren();
     for (const name of this.chosen) {
-      const u = unitLabel(this.info(name));
+      const info = this.info(name);
+      const u = unitLabel(info);
       const readout = el('span', { class: 'readout', 'data-testid': `plot-value-${name}` }, '');
       const box = el('figure', { class: 'plot', 'data-testid': `plot-${name}` }, el('figcaption', {}, name, u ? ` [${u}]` : '', ' ', readout));
       this.grid.append(box);
@@ -71,7 +73,8 @@ export class Plots {
         width: 330, height: 140,
         legend: { show: false },
         cursor: { show: false },
-        scales: { x: { time: false } },
+        // a value at rest is drawn flat at its level, not its last digits' noise across the axis
+        scales: { x: { time: false }, y: { range: (_u, min, max) => restingRange(min, max, info) ?? uPlot.rangeNum(min, max, 0.1, true) } },
         axes: [{ label: 't [s]', size: 30, values: (_u: uPlot, ticks: number[]) => tickLabels(ticks) },
           { size: axisWidth, values: (_u: uPlot, ticks: number[]) => tickLabels(ticks) }],
         series: [{}, { label: name, stroke: '#1f6fd1', width: 1.5, spanGaps: false, points: { show: false } }],
