@@ -61,7 +61,8 @@ export function renderMachine(m: Machine, current: ReadonlySet<string>, chain: r
   const root = svg('svg', {
     viewBox: `0 0 ${width} ${height}`, class: large ? 'diagram large' : 'diagram', role: 'img',
     'aria-label': `${m.title}: current state ${[...current].join(' + ')}`, 'data-testid': `diagram-${m.machine}`,
-    style: `max-width:${width * 1.15}px`,
+    // the full console: no larger than 1.15× its drawn size; the lesson view fills its panel
+    style: large ? '' : `max-width:${width * 1.15}px`,
   });
   root.append(svg('defs', {},
     svg('marker', { id: `arrow-${id}`, viewBox: '0 0 10 10', refX: 9, refY: 5, markerWidth: 8, markerHeight: 8, markerUnits: 'userSpaceOnUse', orient: 'auto-start-reverse' },
