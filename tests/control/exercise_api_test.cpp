@@ -85,17 +85,7 @@ TEST_F(ExerciseApi, ListsTheShippedExercises) {
 }
 
 /// The data of every `exercise` event in a stream's text, in order.
-std::vector<json> exercise_events(const std::string& stream) {
-  std::vector<json> out;
-  const std::string head = "event: exercise\ndata: ";
-  for (auto at = stream.find(head); at != std::string::npos; at = stream.find(head, at + 1)) {
-    const auto from = at + head.size();
-    const auto end = stream.find('\n', from);
-    if (end == std::string::npos) break;  // not whole yet
-    out.push_back(json::parse(stream.substr(from, end - from)));
-  }
-  return out;
-}
+std::vector<json> exercise_events(const std::string& stream) { return vtest::events_of(stream, "exercise"); }
 
 TEST_F(ExerciseApi, TheStreamSendsTheExerciseOnConnectOnSelectionAndWhenAStepIsDone) {
   vtest::StreamCapture stream(p().port(), "");

@@ -38,17 +38,7 @@ TEST(FindingsApi, FindingsOfTheMasterPageByPage) {
 }
 
 /// The `findings` pages in a stream's text, in order.
-std::vector<json> findings_events(const std::string& stream) {
-  std::vector<json> out;
-  const std::string head = "event: findings\ndata: ";
-  for (auto at = stream.find(head); at != std::string::npos; at = stream.find(head, at + 1)) {
-    const auto from = at + head.size();
-    const auto end = stream.find('\n', from);
-    if (end == std::string::npos) break;  // not whole yet
-    out.push_back(json::parse(stream.substr(from, end - from)));
-  }
-  return out;
-}
+std::vector<json> findings_events(const std::string& stream) { return vtest::events_of(stream, "findings"); }
 
 TEST(FindingsApi, TheStreamCarriesNewFindingsOnceEachAndStartsAgainAfterARestart) {
   LivePlant p(scenario::load_scenario_file(VPLANT_REFERENCE_PLANT), scenario::default_environment());

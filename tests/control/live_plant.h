@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "control/control_plane.h"
 #include "engine/running/environment.h"
@@ -151,5 +152,18 @@ class StreamCapture {
   std::atomic<bool> stop_{false};
   std::thread reader_;
 };
+
+/// The data of every `name` event in a stream's text, in order (an event not whole yet is left out).
+inline std::vector<nlohmann::json> events_of(const std::string& stream, const std::string& name) {
+  std::vector<nlohmann::json> out;
+  const std::string head = "event: " + name + "\ndata: ";
+  for (auto at = stream.find(head); at != std::string::npos; at = stream.find(head, at + 1)) {
+    const auto from = at + head.size();
+    const auto end = stream.find('\n', from);
+    if (end == std::string::npos) break;
+    out.push_back(nlohmann::json::parse(stream.substr(from, end - from)));
+  }
+  return out;
+}
 
 }  // namespace vtest
