@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <iterator>
 #include <string_view>
 
 #include "sim/file_reader.h"
@@ -22,9 +24,11 @@ void expect_list(const YAML::Node& n, const std::string& file, std::string_view 
   if (!n.IsSequence()) fail(n, file, fmt::format("{}: expected a list of {}", what, what));
 }
 
-/// A number in SI units; `true`/`false` are accepted for flags and read as 1/0.
+/// A number in SI units; a flag's words (true/false, yes/no, on/off) are read as 1/0.
 double number(const YAML::Node& n, const std::string& file, std::string_view what) {
-  if (n.IsScalar() && (n.Scalar() == "true" || n.Scalar() == "false")) return sim::read_bool(n, file, what) ? 1.0 : 0.0;
+  static constexpr std::string_view kFlagWords[] = {"true", "false", "yes", "no", "on", "off"};
+  if (n.IsScalar() && std::find(std::begin(kFlagWords), std::end(kFlagWords), n.Scalar()) != std::end(kFlagWords))
+    return sim::read_bool(n, file, what) ? 1.0 : 0.0;
   return sim::read_number(n, file, what);
 }
 

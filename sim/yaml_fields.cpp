@@ -106,7 +106,7 @@ void MapReader::finish() const {
     std::string known;
     for (const auto& a : asked_) known += (known.empty() ? "" : ", ") + a;
     throw DiagnosticError(mark_of(kv.first, file_),
-                    "unknown key '" + k + "' in " + what_ + (known.empty() ? "" : " (known: " + known + ")"));
+                          "unknown key '" + k + "' in " + what_ + (known.empty() ? "" : " (known: " + known + ")"));
   }
 }
 
