@@ -3,8 +3,6 @@
 #include <cstdio>
 #include <string>
 
-#include <vplant/error.h>
-
 #include "api/frame_convert.h"
 
 namespace vplant {
@@ -13,12 +11,12 @@ Frame Frame::make(std::uint32_t id, std::initializer_list<std::uint8_t> bytes) {
   if (bytes.size() > 8) {
     const std::string reason = "Frame::make: " + std::to_string(bytes.size()) +
                                " data bytes are out of range: a classic CAN frame has 0..8";
-    throw Error("", 0, 0, reason, reason);
+    detail::fail(reason);
   }
   if (id > sim::CanFrame::kMaxExtId) {
     const std::string reason = "Frame::make: identifier 0x" + detail::hex(id) +
                                " is out of range: 0x000..0x7FF (11-bit) or up to 0x1FFFFFFF (29-bit)";
-    throw Error("", 0, 0, reason, reason);
+    detail::fail(reason);
   }
   Frame f;
   f.id = id;

@@ -1,12 +1,12 @@
 // Private to the library: the public vplant::Frame to and from the simulator's sim::CanFrame.
 #pragma once
 
-#include <vplant/error.h>
 #include <vplant/frame.h>
 
 #include <cstdio>
 #include <string>
 
+#include "api/error_convert.h"
 #include "sim/can_frame.h"
 
 namespace vplant::detail {
@@ -28,7 +28,7 @@ inline void check(const Frame& f, const char* call) {
     reason = std::string(call) + ": identifier 0x" + hex(f.id) + " is out of range: an 11-bit identifier is 0x000..0x7FF (set extended for 29 bits)";
   else if (f.id > sim::CanFrame::kMaxExtId)
     reason = std::string(call) + ": identifier 0x" + hex(f.id) + " is out of range: a 29-bit identifier is 0x00000000..0x1FFFFFFF";
-  if (!reason.empty()) throw Error("", 0, 0, reason, reason);
+  if (!reason.empty()) fail(reason);
 }
 
 inline sim::CanFrame to_sim(const Frame& f) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <map>
 
+#include "api/error_convert.h"
 #include "api/frame_convert.h"
 #include "devices/device.h"
 #include "engine/running/environment.h"
@@ -25,11 +26,9 @@ namespace vplant {
 
 namespace {
 
-[[noreturn]] void rethrow(const scenario::LoadError& e) {
-  throw Error(e.mark().file, e.mark().line, e.mark().column, e.reason(), e.what());
-}
+using detail::fail;
 
-[[noreturn]] void fail(const std::string& reason) { throw Error("", 0, 0, reason, reason); }
+[[noreturn]] void rethrow(const scenario::LoadError& e) { throw detail::to_error(e.diagnostic()); }
 
 /// The plant's parameter names in one line, for an error about an unknown one.
 std::string list_parameters(const scenario::PlantModel& plant) {

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 
+#include "api/error_convert.h"
 #include "api/frame_convert.h"
 #include "devices/canopen/sdo_abort.h"
 
@@ -15,7 +16,7 @@ namespace vplant::test {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& reason) { throw Error("", 0, 0, reason, reason); }
+using detail::fail;
 
 using detail::hex;
 

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace devices {
@@ -22,6 +23,12 @@ bool parse_integer(const std::string& text, bool is_signed, std::int64_t& s, std
   if (first == last || (base == 16 && negative)) return false;
   const auto [ptr, ec] = is_signed ? std::from_chars(first, last, s, base) : std::from_chars(first, last, u, base);
   return ec == std::errc() && ptr == last;
+}
+
+std::string shortest(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
 }
 
 }  // namespace
@@ -47,23 +54,29 @@ void SettingsReader::fail(const std::string& name, const std::string& text, cons
   if (error_.empty()) error_ = "setting " + name + "='" + text + "': expected " + expected;
 }
 
+// The same words as the scenario's YAML reader (sim/yaml_fields.h) for a value out of its range.
+void SettingsReader::out_of_range(const std::string& name, const std::string& text, const std::string& min,
+                                  const std::string& max) {
+  if (error_.empty()) error_ = "setting " + name + ": value " + text + " out of range [" + min + ", " + max + "]";
+}
+
 void SettingsReader::get(const std::string& name, std::uint64_t& value, std::uint64_t min, std::uint64_t max) {
   const auto* text = find(name);
   if (!text) return;
-  const std::string range = std::to_string(min) + ".." + std::to_string(max);
   std::int64_t unused = 0;
   std::uint64_t v = 0;
-  if (!parse_integer(*text, false, unused, v) || v < min || v > max) return fail(name, *text, "an integer in " + range);
+  if (!parse_integer(*text, false, unused, v)) return fail(name, *text, "an integer");
+  if (v < min || v > max) return out_of_range(name, *text, std::to_string(min), std::to_string(max));
   value = v;
 }
 
 void SettingsReader::get(const std::string& name, std::int64_t& value, std::int64_t min, std::int64_t max) {
   const auto* text = find(name);
   if (!text) return;
-  const std::string range = std::to_string(min) + ".." + std::to_string(max);
   std::int64_t v = 0;
   std::uint64_t unused = 0;
-  if (!parse_integer(*text, true, v, unused) || v < min || v > max) return fail(name, *text, "an integer in " + range);
+  if (!parse_integer(*text, true, v, unused)) return fail(name, *text, "an integer");
+  if (v < min || v > max) return out_of_range(name, *text, std::to_string(min), std::to_string(max));
   value = v;
 }
 
@@ -72,9 +85,8 @@ void SettingsReader::get(const std::string& name, double& value, double min, dou
   if (!text) return;
   char* end = nullptr;
   const double v = std::strtod(text->c_str(), &end);
-  if (text->empty() || *end != '\0' || !std::isfinite(v) || v < min || v > max) {
-    return fail(name, *text, "a number in " + std::to_string(min) + ".." + std::to_string(max));
-  }
+  if (text->empty() || *end != '\0' || !std::isfinite(v)) return fail(name, *text, "a number");
+  if (v < min || v > max) return out_of_range(name, *text, shortest(min), shortest(max));
   value = v;
 }
 
@@ -135,7 +147,7 @@ std::string SettingsReader::finish() const {
 std::string unknown_setting(const std::string& name, const std::set<std::string>& known) {
   std::string list;
   for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-  return "unknown setting '" + name + "' (" + (list.empty() ? "no settings" : "settings: " + list) + ")";
+  return "unknown setting '" + name + "' (" + (list.empty() ? "no settings" : "known: " + list) + ")";
 }
 
 }  // namespace devices

@@ -66,6 +66,7 @@ class SettingsReader {
  private:
   const std::string* find(const std::string& name);
   void fail(const std::string& name, const std::string& text, const std::string& expected);
+  void out_of_range(const std::string& name, const std::string& text, const std::string& min, const std::string& max);
 
   const std::map<std::string, std::string>& settings_;
   std::set<std::string> known_;
@@ -74,7 +75,8 @@ class SettingsReader {
   std::string error_;
 };
 
-/// The one form of an unknown setting's error: "unknown setting 'x' (settings: a, b, c)", or
+/// The one form of an unknown setting's error: "unknown setting 'x' (known: a, b, c)" (the YAML
+/// reader's words for an unknown key), or
 /// "(no settings)" when the product has none.
 std::string unknown_setting(const std::string& name, const std::set<std::string>& known);
 

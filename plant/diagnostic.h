@@ -1,33 +1,20 @@
-// How the plant reports a rejected description or parameter: a reason, and where it came from.
+// How the plant reports a rejected description (the project's one diagnostic, sim/diagnostic.h)
+// or a refused run-time change (Status).
 #pragma once
 
-#include <stdexcept>
 #include <string>
 
-#include "sim/source_mark.h"
+#include "sim/diagnostic.h"
 
 namespace plant {
 
 /// Where a piece of a plant description was written (0: built in code): the project's one mark.
 using sim::SourceMark;
-
 /// A reason, printed as `file:line:col: reason` when the mark is known.
-struct Diagnostic {
-  SourceMark mark;
-  std::string reason;
-
-  std::string to_string() const;
-};
-
-/// Thrown when a plant description cannot be built; what() is the formatted diagnostic.
-class DescriptionError : public std::runtime_error {
- public:
-  explicit DescriptionError(Diagnostic d) : std::runtime_error(d.to_string()), diagnostic_(std::move(d)) {}
-  const Diagnostic& diagnostic() const { return diagnostic_; }
-
- private:
-  Diagnostic diagnostic_;
-};
+using sim::Diagnostic;
+/// Thrown when a plant description cannot be built: the same class as scenario::LoadError, so the
+/// engine lets it through unchanged (catching one catches the other).
+using DescriptionError = sim::DiagnosticError;
 
 /// Outcome of a run-time change (set_parameter): ok, or the reason it was refused.
 class Status {

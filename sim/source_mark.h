@@ -1,6 +1,6 @@
-// Where a piece of a file was written: the project's one source mark, shared by the plant's
-// descriptions (plant::Diagnostic) and the engine's scenarios (scenario::LoadError). In sim/
-// because that is the lowest layer both stand on (plant/ is optional in a build).
+// Where a piece of a file was written: the project's one source mark, what a sim::Diagnostic
+// (sim/diagnostic.h) points with. In sim/ because that is the lowest layer the plant, the EDS
+// reader and the engine all stand on (plant/ is optional in a build).
 #pragma once
 
 #include <string>
@@ -13,7 +13,7 @@ struct SourceMark {
   int line = 0;
   int column = 0;
 
-  /// "file:line:col" (or "file" / "<command line>" when the position is unknown).
+  /// "file:line:col" ("file:line" without a column; "file" / "<command line>" without a line).
   std::string to_string() const;
 };
 

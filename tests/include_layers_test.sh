@@ -25,4 +25,11 @@ rule engine/reporting engine/runner.h
 EXCEPT='devices/canopen/node\.(h|cpp)' rule devices/canopen devices/canopen/node.h
 # A product knows the Product struct (devices/product.h), not the registry that lists them all.
 EXCEPT='devices/registry\.(h|cpp)|devices/configured_eds\.h' rule devices devices/registry.h
+# sim/: only the one strict YAML field reader (yaml_fields.*, its own library vplant_yaml_fields)
+# includes the YAML parser, so vplant_sim links none.
+hits=$(grep -rn --include='*.h' --include='*.cpp' '#include <yaml-cpp/' sim | grep -Ev '^sim/yaml_fields\.(h|cpp):')
+if [ -n "$hits" ]; then
+  printf 'only sim/yaml_fields.* may include yaml-cpp in sim/:\n%s\n' "$hits"
+  status=1
+fi
 exit $status

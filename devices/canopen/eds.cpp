@@ -20,15 +20,11 @@ bool read_file(const std::string& path, std::string& text, EdsError& error) {
     case sim::ReadStatus::Missing: reason = std::string("cannot open: ") + std::strerror(ENOENT); break;
     case sim::ReadStatus::Failed: break;
   }
-  error = EdsError{path, 0, reason, false};
+  error = EdsError{{path, 0, 0}, reason, false};
   return false;
 }
 
 }  // namespace
-
-std::string EdsError::message() const {
-  return file + ":" + std::to_string(line) + ": " + (warning ? "warning: " : "") + reason;
-}
 
 std::optional<ObjectDictionary> parse_eds(std::string_view text, const std::string& file_name, EdsError& error,
                                           EdsFileInfo* info, std::vector<EdsError>* warnings, EdsStrictness strictness) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "devices/canopen/object_dictionary.h"
+#include "sim/diagnostic.h"
 
 namespace canopen {
 
@@ -63,13 +64,10 @@ struct EdsFileInfo {
   std::vector<std::string> comments;
 };
 
-struct EdsError {
-  std::string file;
-  int line = 0;  ///< 1-based; 0 = whole file (e.g. cannot open)
-  std::string reason;
-  bool warning = false;
-  std::string message() const;  ///< "file:line: reason" ("file:line: warning: reason")
-};
+/// An EDS error or warning: the project's one diagnostic (sim/diagnostic.h). The mark has the
+/// file and the 1-based line (0: the whole file, e.g. cannot open) and no column (the INI format
+/// is line-based), so to_string() reads "file:line: reason" ("file:line: warning: reason").
+using EdsError = sim::Diagnostic;
 
 /// How the reader treats the CiA 306 deviations that EDS/DCF writing tools produce and masters
 /// tolerate (a RECORD with CompactSubObj, counts one too high, no 0x1000, a RECORD without sub 0,

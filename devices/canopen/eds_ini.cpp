@@ -6,7 +6,7 @@
 namespace canopen::eds_detail {
 
 void Diagnostics::error(int line, std::string reason) {
-  items_.push_back(EdsError{file_, line, std::move(reason), false});
+  items_.push_back(EdsError{{file_, line, 0}, std::move(reason), false});
   syntax_.push_back(false);
   ++errors_;
 }
@@ -18,7 +18,7 @@ void Diagnostics::syntax_error(int line, std::string reason) {
 }
 
 void Diagnostics::warning(int line, std::string reason) {
-  items_.push_back(EdsError{file_, line, std::move(reason), true});
+  items_.push_back(EdsError{{file_, line, 0}, std::move(reason), true});
   syntax_.push_back(false);
 }
 
@@ -32,7 +32,7 @@ void Diagnostics::deviation(int line, const std::string& reason, const std::stri
 
 std::vector<EdsError> Diagnostics::sorted() const {
   std::vector<EdsError> out = items_;
-  std::stable_sort(out.begin(), out.end(), [](const EdsError& a, const EdsError& b) { return a.line < b.line; });
+  std::stable_sort(out.begin(), out.end(), [](const EdsError& a, const EdsError& b) { return a.mark.line < b.mark.line; });
   return out;
 }
 
@@ -41,7 +41,7 @@ const EdsError* Diagnostics::first_error() const {
   for (std::size_t i = 0; i < items_.size(); ++i) {
     const EdsError& e = items_[i];
     if (e.warning || (syntax_errors_ > 0 && !syntax_[i])) continue;
-    if (!best || e.line < best->line) best = &e;
+    if (!best || e.mark.line < best->mark.line) best = &e;
   }
   return best;
 }

@@ -14,11 +14,11 @@ std::unique_ptr<EdsNode> EdsNode::load(const std::string& eds_path, const Device
   auto od = canopen::load_eds(eds_path, eds_error, &info, &warnings,
                               options.strict_eds ? canopen::EdsStrictness::Strict : canopen::EdsStrictness::Tolerant);
   if (!od) {
-    error = eds_error.message();
+    error = eds_error.to_string();
     return nullptr;
   }
   // A non-conformant but usable file still runs; the operator sees what is wrong with it.
-  for (const auto& w : warnings) sim::log(sim::LogLevel::Warn, "{}", w.message());
+  for (const auto& w : warnings) sim::log(sim::LogLevel::Warn, "{}", w.to_string());
   if (!options.variant.empty()) {
     error = "an EDS node has no variants";
     return nullptr;

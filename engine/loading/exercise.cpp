@@ -132,7 +132,7 @@ bool valid_exercise_name(const std::string& name) {
 }
 
 Exercise parse_exercise(const std::string& text, const std::string& file, const std::string& name) {
-  const auto root = parse_scenario_yaml(text, file);
+  const auto root = parse_yaml(text, file);
   if (!root.IsDefined() || root.IsNull()) throw LoadError(SourceMark{file, 1, 1}, "empty exercise file");
   MapReader r(root, file, "exercise");
   Exercise e;

@@ -124,7 +124,7 @@ ScenarioCases ScenarioCases::load_file(const std::string& path) {
 
 ScenarioCases ScenarioCases::parse(const std::string& text, const std::string& file, const std::string& dir) {
   ScenarioCases c(text, file, dir);
-  const YAML::Node root = parse_scenario_yaml(text, file);
+  const YAML::Node root = parse_yaml(text, file);
   if (root.IsMap() && root["matrix"]) {
     const YAML::Node matrix = root["matrix"];
     MapReader r(matrix, file, "matrix");
@@ -190,7 +190,7 @@ std::optional<std::size_t> ScenarioCases::find(const std::string& name) const {
 
 Scenario ScenarioCases::load(std::size_t i) const {
   if (i == 0 && first_) return *first_;
-  YAML::Node root = parse_scenario_yaml(text_, file_);
+  YAML::Node root = parse_yaml(text_, file_);
   if (!axes_.empty()) {
     // Every key and value node first: relabelling a key below changes the matrix mapping.
     std::vector<std::pair<YAML::Node, YAML::Node>> entries;

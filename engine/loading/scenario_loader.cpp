@@ -2,8 +2,6 @@
 
 #include <set>
 
-#include <yaml-cpp/depthguard.h>
-
 #include "engine/loading/script_loader.h"
 #include "sim/file_reader.h"
 #include "sim/transport_factory.h"
@@ -285,19 +283,8 @@ OutputSpec read_outputs(const YAML::Node& node, const std::string& file) {
 
 }  // namespace
 
-YAML::Node parse_scenario_yaml(const std::string& text, const std::string& file) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::DeepRecursion& e) {
-    throw LoadError(SourceMark{file, e.mark.line + 1, e.mark.column + 1},
-                    "nesting deeper than " + std::to_string(e.depth() - 1) + " levels (the YAML parser's limit)");
-  } catch (const YAML::ParserException& e) {
-    throw LoadError(SourceMark{file, e.mark.line + 1, e.mark.column + 1}, "YAML syntax error: " + e.msg);
-  }
-}
-
 Scenario parse_scenario(const std::string& text, const std::string& file, const std::string& dir) {
-  return parse_scenario_node(parse_scenario_yaml(text, file), file, dir);
+  return parse_scenario_node(parse_yaml(text, file), file, dir);
 }
 
 Scenario parse_scenario_node(const YAML::Node& root, const std::string& file, const std::string& dir) {

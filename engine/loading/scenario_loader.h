@@ -15,9 +15,9 @@ Scenario load_scenario_file(const std::string& path);
 std::string read_scenario_file(const std::string& path, std::string& dir);
 /// `file` names the text in errors; relative input paths resolve against `dir`.
 Scenario parse_scenario(const std::string& text, const std::string& file, const std::string& dir);
-/// The two halves of parse_scenario: the YAML document (syntax errors as LoadError), and the
-/// scenario from it. The document's `matrix:` is not read here (ScenarioCases expands it).
-YAML::Node parse_scenario_yaml(const std::string& text, const std::string& file);
+/// The second half of parse_scenario, after parse_yaml (engine/loading/yaml_fields.h): the
+/// scenario from its YAML document. The document's `matrix:` is not read here (ScenarioCases
+/// expands it).
 Scenario parse_scenario_node(const YAML::Node& root, const std::string& file, const std::string& dir);
 
 }  // namespace scenario

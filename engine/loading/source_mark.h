@@ -3,26 +3,14 @@
 // `file:line:col: reason`, which `vplant run` prints before exiting with 2.
 #pragma once
 
-#include <stdexcept>
-#include <string>
-
-#include "sim/source_mark.h"
+#include "sim/diagnostic.h"
 
 namespace scenario {
 
 /// The project's one source mark (sim/source_mark.h).
 using sim::SourceMark;
-
-class LoadError : public std::runtime_error {
- public:
-  LoadError(const SourceMark& mark, const std::string& reason)
-      : std::runtime_error(mark.to_string() + ": " + reason), mark_(mark), reason_(reason) {}
-  const SourceMark& mark() const { return mark_; }
-  const std::string& reason() const { return reason_; }
-
- private:
-  SourceMark mark_;
-  std::string reason_;
-};
+/// The engine's name for the project's one diagnostic exception (sim/diagnostic.h): a plant's
+/// DescriptionError is the same class, so it reaches the CLI and the API without a converter.
+using LoadError = sim::DiagnosticError;
 
 }  // namespace scenario

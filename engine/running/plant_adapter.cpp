@@ -63,10 +63,11 @@ std::unique_ptr<PlantModel> make_physics_plant(const YAML::Node& section, const 
                                                           : plant::parse_plant_description(section, file);
     plant::validate(d);
     return std::make_unique<PhysicsPlant>(d);
-  } catch (const plant::DescriptionError& e) {
-    auto mark = e.diagnostic().mark;
-    if (mark.file.empty()) mark.file = file;  // a piece built in code: point at the scenario
-    throw LoadError(mark, e.diagnostic().reason);
+  } catch (const LoadError& e) {  // plant::DescriptionError is the same class
+    if (!e.mark().file.empty()) throw;
+    auto mark = e.mark();
+    mark.file = file;  // a piece built in code: point at the scenario
+    throw LoadError(mark, e.reason());
   }
 }
 

@@ -16,8 +16,8 @@ canopen::ObjectDictionary parse(const std::string& text) {
   canopen::EdsError error;
   std::vector<canopen::EdsError> warnings;
   auto od = canopen::parse_eds(text, "test.eds", error, nullptr, &warnings);
-  EXPECT_TRUE(od) << error.message();
-  EXPECT_TRUE(warnings.empty()) << warnings.front().message();
+  EXPECT_TRUE(od) << error.to_string();
+  EXPECT_TRUE(warnings.empty()) << warnings.front().to_string();
   return od ? std::move(*od) : canopen::ObjectDictionary{};
 }
 

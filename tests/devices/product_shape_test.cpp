@@ -59,7 +59,7 @@ TEST(ProductShape, AnUnknownSettingIsOneErrorListingTheKnownNames) {
     o.settings = {{"no_such_knob", "1"}};
     std::string error;
     EXPECT_FALSE(p.make(o, error)) << p.name;
-    EXPECT_EQ(error.rfind("unknown setting 'no_such_knob' (settings: ", 0), 0u) << p.name << ": " << error;
+    EXPECT_EQ(error.rfind("unknown setting 'no_such_knob' (known: ", 0), 0u) << p.name << ": " << error;
     ASSERT_TRUE(known.count(p.name)) << p.name;
     EXPECT_NE(error.find(known.at(p.name)), std::string::npos) << p.name << ": " << error;
   }

@@ -110,7 +110,7 @@ TEST(PlantYaml, OutOfRangeValueIsReportedAtTheValue) {
   EXPECT_EQ(error_of(with(kMinimal, "volume: 0.001", "volume: -0.001")),
             "10:17: parameter 'volume' = -0.001 out of range: must be > 0 m^3");
   EXPECT_EQ(error_of(with(kMinimal, "volume: 0.001", "volume: 1 litre")),
-            "10:17: parameter 'volume' must be a number in SI units, got '1 litre'");
+            "10:17: parameter 'volume': '1 litre' is not a number");
 }
 
 TEST(PlantYaml, DuplicateComponentNameIsReportedAtTheSecondName) {
@@ -129,11 +129,30 @@ TEST(PlantYaml, ConnectionToAMissingPortIsReportedAtThePort) {
 
 TEST(PlantYaml, OtherStructuralErrorsArePlacedToo) {
   EXPECT_EQ(error_of(with(kMinimal, "      name: oil", "      name: oil\n      colour: amber")),
-            "5:7: unknown key 'colour' in a component");
+            "5:7: unknown key 'colour' in a component (known: type, name, parameters)");
   EXPECT_EQ(error_of(with(kMinimal, "[tank.port, relief.T]", "[tank.port]")), "11:7: port 'relief.T' is not connected");
   EXPECT_EQ(error_of(with(kMinimal, "[tank.port, relief.T]", "[tank.port, relief.T, relief.P]")),
             "17:36: port 'relief.P' is connected twice");
-  EXPECT_EQ(error_of("plant:\n  components: [\n"), "3:1: end of sequence flow not found");
+  EXPECT_EQ(error_of("plant:\n  components: [\n"), "3:1: YAML syntax error: end of sequence flow not found");
+}
+
+// The plant reads its description with the engine's strict reader (sim/yaml_fields.h): the same
+// wording for a duplicate key, a missing key, a key misplaced in a section, a value of the wrong kind.
+TEST(PlantYaml, TheSharedReaderPlacesEveryFieldError) {
+  EXPECT_EQ(error_of(with(kMinimal, "      name: oil", "      name: oil\n      name: oil2")),
+            "5:7: a component: duplicate key 'name'");
+  EXPECT_EQ(error_of(with(kMinimal, "    - type: tank\n      name: tank\n", "    - name: tank\n")),
+            "5:7: a component: missing key 'type'");
+  EXPECT_EQ(error_of("plant:\n  connections: []\n"), "2:3: plant: missing key 'components'");
+  EXPECT_EQ(error_of(with(kMinimal, "plant:\n", "plant:\n  solver: {max_stp: 0.001}\n")),
+            "2:12: unknown key 'max_stp' in plant.solver (known: max_step)");
+  EXPECT_EQ(error_of(with(kMinimal, "  connections:\n", "  connection:\n")),
+            "13:3: unknown key 'connection' in plant (known: solver, components, connections)");
+  EXPECT_EQ(error_of(with(kMinimal, "volume: 0.001", "volume: [1]")), "10:17: parameter 'volume': expected a scalar value");
+  EXPECT_EQ(error_of(with(kMinimal, "volume: 0.001", "volume: 0.001\n        volume: 0.002")),
+            "11:9: parameters: duplicate key 'volume'");
+  EXPECT_EQ(error_of(with(kMinimal, "ports: [line.port, relief.P]", "ports: line.port")),
+            "15:14: ports: expected a list of ports");
 }
 
 // yaml-cpp stops at its depth limit with the message "bad file"; the reason must say what is wrong.

@@ -31,7 +31,7 @@ int check_file(const std::string& path) {
   const auto findings = canopen::check_eds_file(path);
   bool errors = false;
   for (const auto& f : findings) {
-    std::fprintf(stderr, "%s\n", f.message().c_str());
+    std::fprintf(stderr, "%s\n", f.to_string().c_str());
     errors = errors || !f.warning;
   }
   if (findings.empty()) std::fprintf(stderr, "%s: ok\n", path.c_str());

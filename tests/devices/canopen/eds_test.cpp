@@ -186,34 +186,34 @@ void expect_error(const std::string& text, const std::string& at_line, const std
   auto od = canopen::parse_eds(text, "bad.eds", error, nullptr, nullptr, canopen::EdsStrictness::Strict);
   EXPECT_FALSE(od.has_value());
   const int line = line_of(text, at_line);
-  EXPECT_EQ(error.file, "bad.eds");
-  EXPECT_EQ(error.line, line);
+  EXPECT_EQ(error.mark.file, "bad.eds");
+  EXPECT_EQ(error.mark.line, line);
   EXPECT_FALSE(error.warning);
-  EXPECT_EQ(error.message(), "bad.eds:" + std::to_string(line) + ": " + reason);
+  EXPECT_EQ(error.to_string(), "bad.eds:" + std::to_string(line) + ": " + reason);
 }
 
 std::vector<EdsError> warnings_of(const std::string& text) {
   EdsError error;
   std::vector<EdsError> warnings;
   auto od = canopen::parse_eds(text, "w.eds", error, nullptr, &warnings);
-  EXPECT_TRUE(od.has_value()) << error.message();
+  EXPECT_TRUE(od.has_value()) << error.to_string();
   return warnings;
 }
 
 void expect_warning(const std::string& text, const std::string& at_line, const std::string& reason) {
   const auto warnings = warnings_of(text);
-  ASSERT_EQ(warnings.size(), 1u) << (warnings.empty() ? "" : warnings[0].message());
+  ASSERT_EQ(warnings.size(), 1u) << (warnings.empty() ? "" : warnings[0].to_string());
   const int line = line_of(text, at_line);
   EXPECT_TRUE(warnings[0].warning);
-  EXPECT_EQ(warnings[0].message(), "w.eds:" + std::to_string(line) + ": warning: " + reason);
+  EXPECT_EQ(warnings[0].to_string(), "w.eds:" + std::to_string(line) + ": warning: " + reason);
 }
 
 ObjectDictionary load_fixture(const std::string& name, EdsFileInfo* info = nullptr) {
   EdsError error;
   std::vector<EdsError> warnings;
   auto od = canopen::load_eds(kDataDir + name, error, info, &warnings);
-  EXPECT_TRUE(od.has_value()) << error.message();
-  for (const auto& w : warnings) ADD_FAILURE() << w.message();
+  EXPECT_TRUE(od.has_value()) << error.to_string();
+  for (const auto& w : warnings) ADD_FAILURE() << w.to_string();
   return od ? std::move(*od) : ObjectDictionary{};
 }
 
@@ -425,9 +425,9 @@ TEST(EdsReader, CrLfCaseAndSpacingVariantsGiveTheSameDictionary) {
   EdsFileInfo a, b;
   std::vector<EdsError> warnings;
   auto od_lf = canopen::parse_eds(lf, "lf.eds", error, &a);
-  ASSERT_TRUE(od_lf) << error.message();
+  ASSERT_TRUE(od_lf) << error.to_string();
   auto od_variant = canopen::parse_eds(variant, "crlf.eds", error, &b, &warnings);
-  ASSERT_TRUE(od_variant) << error.message();
+  ASSERT_TRUE(od_variant) << error.to_string();
   EXPECT_TRUE(warnings.empty());
   expect_same_dictionary(*od_lf, *od_variant);
   EXPECT_EQ(canopen::write_eds(*od_lf, a), canopen::write_eds(*od_variant, b));
@@ -464,7 +464,7 @@ TEST(EdsReader, DcfParameterValueBecomesTheValueAfterReset) {
   const std::string text = with(kMinimal, "DefaultValue=7\n", "DefaultValue=7\nParameterValue=0x2A\n");
   EdsError error;
   auto od = canopen::parse_eds(text, "node.dcf", error);
-  ASSERT_TRUE(od) << error.message();
+  ASSERT_TRUE(od) << error.to_string();
   EXPECT_EQ(od->entry(0x2000, 0)->default_value, Bytes{42});
 }
 
@@ -497,7 +497,7 @@ TEST(EdsErrors, DuplicateSection) {
   const int first = line_of(kMinimal, "[FileInfo]");
   EdsError error;
   ASSERT_FALSE(canopen::parse_eds(text, "bad.eds", error));
-  EXPECT_EQ(error.message(), "bad.eds:" + std::to_string(line_of(text, "FileName=again.eds") - 1) +
+  EXPECT_EQ(error.to_string(), "bad.eds:" + std::to_string(line_of(text, "FileName=again.eds") - 1) +
                                  ": duplicate section [FileInfo] (first at line " + std::to_string(first) + ")");
 }
 
@@ -641,7 +641,7 @@ TEST(EdsErrors, MandatoryObjectsSectionMissing) {
   const auto text = with(kMinimal, "[MandatoryObjects]\nSupportedObjects=3\n1=0x1000\n2=0x1001\n3=0x1018\n", "");
   EdsError error;
   ASSERT_FALSE(canopen::parse_eds(text, "bad.eds", error));
-  EXPECT_EQ(error.message(), "bad.eds:1: missing section [MandatoryObjects]");
+  EXPECT_EQ(error.to_string(), "bad.eds:1: missing section [MandatoryObjects]");
 }
 
 TEST(EdsErrors, ListedObjectWithoutSection) {
@@ -689,7 +689,7 @@ TEST(EdsErrors, IndexZeroIsNotAnObject) {
 TEST(EdsErrors, CompactFormMisuse) {
   const std::string array = "[2001]\nParameterName=Array\nObjectType=0x8\nDataType=0x0005\nAccessType=rw\nDefaultValue=0\nCompactSubObj=2\n";
   EdsError ok;
-  EXPECT_TRUE(canopen::parse_eds(minimal_with_2001(array), "ok.eds", ok)) << ok.message();
+  EXPECT_TRUE(canopen::parse_eds(minimal_with_2001(array), "ok.eds", ok)) << ok.to_string();
   expect_error(minimal_with_2001(with(array, "ObjectType=0x8", "ObjectType=0x9")), "CompactSubObj=2",
                "CompactSubObj is only allowed for ARRAY objects, and [2001] is a RECORD");  // strict
   expect_error(minimal_with_2001(with(array, "ObjectType=0x8", "ObjectType=0x7")), "CompactSubObj=2",
@@ -711,7 +711,7 @@ TEST(EdsErrors, CompactFormMisuse) {
 TEST(EdsErrors, FileThatCannotBeOpened) {
   EdsError error;
   EXPECT_FALSE(canopen::load_eds("/nonexistent/device.eds", error));
-  EXPECT_EQ(error.message(), "/nonexistent/device.eds:0: cannot open: No such file or directory");
+  EXPECT_EQ(error.to_string(), "/nonexistent/device.eds: cannot open: No such file or directory");
 }
 
 TEST(EdsErrors, TheFirstErrorByLineIsReported) {
@@ -721,7 +721,7 @@ TEST(EdsErrors, TheFirstErrorByLineIsReported) {
   expect_error(text, "SupportedObjects=4", "SupportedObjects=4 but [MandatoryObjects] lists 3 entries");
   const auto all = canopen::check_eds(text, "bad.eds");
   ASSERT_EQ(all.size(), 2u);
-  EXPECT_LT(all[0].line, all[1].line);
+  EXPECT_LT(all[0].mark.line, all[1].mark.line);
 }
 
 // ---- warnings ------------------------------------------------------------------------------------
@@ -776,10 +776,10 @@ TEST(EdsWarnings, CheckListsErrorsAndWarningsInLineOrder) {
   text = with(text, "CreatedBy=test\n", "");
   const auto all = canopen::check_eds(text, "x.eds");
   ASSERT_EQ(all.size(), 3u);
-  EXPECT_EQ(all[0].message(), "x.eds:1: warning: missing CreatedBy in [FileInfo]");
-  EXPECT_EQ(all[1].message(), "x.eds:" + std::to_string(line_of(text, "Colour=blue")) +
+  EXPECT_EQ(all[0].to_string(), "x.eds:1: warning: missing CreatedBy in [FileInfo]");
+  EXPECT_EQ(all[1].to_string(), "x.eds:" + std::to_string(line_of(text, "Colour=blue")) +
                                   ": warning: unknown key 'Colour' in [1000] ignored");
-  EXPECT_EQ(all[2].message(), "x.eds:" + std::to_string(line_of(text, "DefaultValue=300")) +
+  EXPECT_EQ(all[2].to_string(), "x.eds:" + std::to_string(line_of(text, "DefaultValue=300")) +
                                   ": DefaultValue: 300 is out of range for UNSIGNED8 (0..255)");
 }
 
@@ -793,7 +793,7 @@ TEST(EdsWriter, FixtureRoundTripsEntryByEntryAndByteByByte) {
   EdsError error;
   EdsFileInfo info2;
   auto again = canopen::parse_eds(text, "written.eds", error, &info2);
-  ASSERT_TRUE(again) << error.message();
+  ASSERT_TRUE(again) << error.to_string();
   expect_same_dictionary(od, *again);
   EXPECT_EQ(canopen::write_eds(*again, info2), text);
 }
@@ -810,11 +810,11 @@ TEST(EdsWriter, DictionaryBuiltInCodeRoundTripsWithoutWarnings) {
   info.comments = {"built in code", "second line"};
   const std::string text = canopen::write_eds(od, info);
   const auto diagnostics = canopen::check_eds(text, "generic.eds");
-  for (const auto& d : diagnostics) ADD_FAILURE() << d.message();
+  for (const auto& d : diagnostics) ADD_FAILURE() << d.to_string();
   EdsError error;
   EdsFileInfo info2;
   auto parsed = canopen::parse_eds(text, "generic.eds", error, &info2);
-  ASSERT_TRUE(parsed) << error.message();
+  ASSERT_TRUE(parsed) << error.to_string();
   expect_same_dictionary(od, *parsed);
   EXPECT_EQ(info2.comments, info.comments);
   EXPECT_EQ(info2.vendor_number, 0x12345678u);  // from 0x1018 sub 1
@@ -872,8 +872,8 @@ TEST(EdsWriter, ValuesKeepTheirBits) {
   EdsError error;
   std::vector<EdsError> warnings;
   auto parsed = canopen::parse_eds(text, "values.eds", error, nullptr, &warnings);
-  ASSERT_TRUE(parsed) << error.message();
-  for (const auto& w : warnings) ADD_FAILURE() << w.message();
+  ASSERT_TRUE(parsed) << error.to_string();
+  for (const auto& w : warnings) ADD_FAILURE() << w.to_string();
   expect_same_dictionary(od, *parsed);
 }
 
@@ -962,13 +962,13 @@ DefaultValue=some text
     const int lines = static_cast<int>(std::count(t.begin(), t.end(), '\n')) + 1;
     if (!od) {
       ++rejected;
-      EXPECT_GE(error.line, 1);
-      EXPECT_LE(error.line, lines);
+      EXPECT_GE(error.mark.line, 1);
+      EXPECT_LE(error.mark.line, lines);
       EXPECT_FALSE(error.reason.empty());
     } else {
       (void)canopen::write_eds(*od, EdsFileInfo{});
     }
-    for (const auto& w : warnings) EXPECT_LE(w.line, lines);
+    for (const auto& w : warnings) EXPECT_LE(w.mark.line, lines);
   }
   EXPECT_GT(rejected, 200) << rejected;  // the mutations do break files, and each says where
 }
@@ -1023,22 +1023,22 @@ TEST(EdsQuirks, EachLoadsWithOneWarningAndStrictRejectsIt) {
     EdsError error;
     std::vector<EdsError> warnings;
     const auto od = canopen::load_eds(path, error, nullptr, &warnings);
-    ASSERT_TRUE(od.has_value()) << error.message();
-    ASSERT_EQ(warnings.size(), 1u) << (warnings.empty() ? "" : warnings[0].message());
-    EXPECT_EQ(warnings[0].message(), at + "warning: " + q.reason + ": " + q.reading);
+    ASSERT_TRUE(od.has_value()) << error.to_string();
+    ASSERT_EQ(warnings.size(), 1u) << (warnings.empty() ? "" : warnings[0].to_string());
+    EXPECT_EQ(warnings[0].to_string(), at + "warning: " + q.reason + ": " + q.reading);
 
     EXPECT_FALSE(canopen::load_eds(path, error, nullptr, nullptr, canopen::EdsStrictness::Strict));
-    EXPECT_EQ(error.message(), at + q.reason);
+    EXPECT_EQ(error.to_string(), at + q.reason);
     const auto checked = canopen::check_eds_file(path);  // `vplant eds --check` is strict
     ASSERT_EQ(checked.size(), 1u);
-    EXPECT_EQ(checked[0].message(), at + q.reason);
+    EXPECT_EQ(checked[0].to_string(), at + q.reason);
   }
 }
 
 TEST(EdsQuirks, TheInterpretationsAreTheDocumentedOnes) {
   EdsError error;
   const auto compact = canopen::load_eds(kDataDir + "quirk_compact_record.dcf", error);
-  ASSERT_TRUE(compact) << error.message();
+  ASSERT_TRUE(compact) << error.to_string();
   EXPECT_EQ(compact->object(0x1600)->code, ObjectCode::Record);
   EXPECT_EQ(compact->get<std::uint8_t>(0x1600, 0), 1);  // one object mapped (from [1600Value])
   EXPECT_EQ(compact->entry(0x1600, 0)->access, Access::ReadWrite);  // masters write it
@@ -1048,43 +1048,43 @@ TEST(EdsQuirks, TheInterpretationsAreTheDocumentedOnes) {
   EXPECT_EQ(compact->entry(0x1600, 8)->type, DataType::Unsigned32);
 
   const auto no_1000 = canopen::load_eds(kDataDir + "quirk_no_1000.eds", error);
-  ASSERT_TRUE(no_1000) << error.message();
+  ASSERT_TRUE(no_1000) << error.to_string();
   ASSERT_NE(no_1000->entry(0x1000, 0), nullptr);
   EXPECT_EQ(no_1000->entry(0x1000, 0)->access, Access::ReadOnly);
   EXPECT_EQ(no_1000->get<std::uint32_t>(0x1000, 0), 0u);
 
   const auto no_sub0 = canopen::load_eds(kDataDir + "quirk_record_no_sub0.eds", error);
-  ASSERT_TRUE(no_sub0) << error.message();
+  ASSERT_TRUE(no_sub0) << error.to_string();
   EXPECT_EQ(no_sub0->get<std::uint8_t>(0x1018, 0), 1);
   EXPECT_EQ(no_sub0->entry(0x1018, 0)->type, DataType::Unsigned8);
 
   const auto wo = canopen::load_eds(kDataDir + "quirk_wo_low_limit.eds", error);
-  ASSERT_TRUE(wo) << error.message();
+  ASSERT_TRUE(wo) << error.to_string();
   EXPECT_EQ(wo->get<std::uint16_t>(0x2000, 0), 1);
   EXPECT_EQ(wo->entry(0x2000, 0)->default_value, ObjectDictionary::encode(DataType::Unsigned16, 1));
 
   const auto subnumber = canopen::load_eds(kDataDir + "quirk_subnumber.eds", error);
-  ASSERT_TRUE(subnumber) << error.message();
+  ASSERT_TRUE(subnumber) << error.to_string();
   EXPECT_EQ(subnumber->object(0x1400)->entries.size(), 3u);
 
   const auto suffix = canopen::load_eds(kDataDir + "quirk_c_suffix.eds", error);
-  ASSERT_TRUE(suffix) << error.message();
+  ASSERT_TRUE(suffix) << error.to_string();
   EXPECT_EQ(suffix->get<std::uint64_t>(0x2001, 0), 0x1234567890ABCDEFull);
 
   const auto unlisted = canopen::load_eds(kDataDir + "quirk_unlisted_object.eds", error);
-  ASSERT_TRUE(unlisted) << error.message();
+  ASSERT_TRUE(unlisted) << error.to_string();
   EXPECT_EQ(unlisted->get<std::uint8_t>(0x2001, 0), 20);
   EXPECT_EQ(unlisted->entry(0x2001, 0)->access, Access::ReadWrite);
 
   const auto no_1001 = canopen::load_eds(kDataDir + "quirk_no_1001.eds", error);
-  ASSERT_TRUE(no_1001) << error.message();
+  ASSERT_TRUE(no_1001) << error.to_string();
   ASSERT_NE(no_1001->entry(0x1001, 0), nullptr);
   EXPECT_EQ(no_1001->entry(0x1001, 0)->type, DataType::Unsigned8);
   EXPECT_EQ(no_1001->entry(0x1001, 0)->access, Access::ReadOnly);
   EXPECT_EQ(no_1001->get<std::uint8_t>(0x1001, 0), 0);
 
   const auto beyond = canopen::load_eds(kDataDir + "quirk_list_beyond_count.eds", error);
-  ASSERT_TRUE(beyond) << error.message();
+  ASSERT_TRUE(beyond) << error.to_string();
   EXPECT_NE(beyond->object(0x1600), nullptr);  // the third entry, beyond SupportedObjects=2
   EXPECT_EQ(beyond->get<std::uint32_t>(0x1600, 1), 0x20000010u);
 }
@@ -1098,7 +1098,7 @@ TEST(EdsQuirks, ACSuffixIsOnlyTakenOffAnInteger) {
     std::vector<EdsError> warnings;
     const auto od = canopen::parse_eds(with(base, "HighLimit=100", std::string("HighLimit=100") + suffix), "s.eds", error,
                                        nullptr, &warnings);
-    ASSERT_TRUE(od) << error.message();
+    ASSERT_TRUE(od) << error.to_string();
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(od->entry(0x2000, 0)->high_limit, ObjectDictionary::encode(DataType::Unsigned16, 100));
   }
@@ -1121,16 +1121,16 @@ TEST(EdsErrors, CobIdAbove7FFWithoutThe29BitFlagMatchesNoFrame) {
                                                                                 : "DefaultValue=$NODEID+0xFFFFFFFF");
     EdsError error;
     EXPECT_FALSE(canopen::load_eds(path, error));
-    EXPECT_EQ(error.message(), path + ":" + std::to_string(line) + ": " + reason);
+    EXPECT_EQ(error.to_string(), path + ":" + std::to_string(line) + ": " + reason);
   }
   // With bit 29 the same CAN-ID is a 29-bit one; a node-relative 11-bit CAN-ID must stay within
   // 0x7FF for every node-ID; a PDO marked not valid (bit 31) does not use its CAN-ID.
   const std::string base = read_file(kDataDir + "quirk_none.eds");
   EdsError error;
   EXPECT_TRUE(canopen::parse_eds(with(base, "DefaultValue=$NODEID+0x200", "DefaultValue=0x3FFFFFFF"), "ok.eds", error))
-      << error.message();
+      << error.to_string();
   EXPECT_TRUE(canopen::parse_eds(with(base, "DefaultValue=$NODEID+0x200", "DefaultValue=0x9FFFFFFF"), "ok.eds", error))
-      << error.message();
+      << error.to_string();
   expect_error(with(base, "DefaultValue=$NODEID+0x200", "DefaultValue=$NODEID+0x7F0"), "DefaultValue=$NODEID+0x7F0",
                "0x1400 sub 1: COB-ID $NODEID+0x000007F0 with node-ID 16 has CAN-ID bits above 0x7FF without bit 29 "
                "(29-bit CAN-ID) set");

@@ -26,7 +26,7 @@ TEST(DsvEds, ParsesBackWithoutWarnings) {
     std::vector<canopen::EdsError> warnings;
     canopen::EdsFileInfo info;
     auto od = canopen::parse_eds(text, "WAGDSVC1.eds", error, &info, &warnings);
-    ASSERT_TRUE(od) << error.message();
+    ASSERT_TRUE(od) << error.to_string();
     EXPECT_TRUE(warnings.empty());
     EXPECT_EQ(od->get<std::uint32_t>(0x1000), 0x00000198u);
     EXPECT_EQ(info.nr_of_rx_pdo, 2);

@@ -433,7 +433,7 @@ TEST(EdsNodeLoad, BrokenFileNamesFileAndLine) {
   EXPECT_EQ(error, path + ":4: SupportedObjects: 'one' is not a number");
   std::remove(path.c_str());
   EXPECT_FALSE(devices::EdsNode::load("/nonexistent.eds", {}, error));
-  EXPECT_EQ(error, "/nonexistent.eds:0: cannot open: No such file or directory");
+  EXPECT_EQ(error, "/nonexistent.eds: cannot open: No such file or directory");
 }
 
 TEST(EdsNodeLoad, OptionsAnEdsNodeDoesNotHave) {

@@ -32,7 +32,7 @@ TEST(Hlt1100Eds, ParsesWithoutWarningsIntoTheSameDictionary) {
   std::vector<canopen::EdsError> warnings;
   canopen::EdsFileInfo info;
   const auto parsed = canopen::parse_eds(text, "hlt1100.eds", error, &info, &warnings);
-  ASSERT_TRUE(parsed) << error.message();
+  ASSERT_TRUE(parsed) << error.to_string();
   EXPECT_TRUE(warnings.empty());
   EXPECT_TRUE(info.lss_supported);
   const auto original = make_object_dictionary(Settings{});

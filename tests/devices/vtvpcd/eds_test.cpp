@@ -30,11 +30,11 @@ TEST(VtvpcdEds, CommittedFileEqualsTheGeneratedOne) {
 TEST(VtvpcdEds, LoadsWithoutErrorsOrWarnings) {
   const std::string text = committed();
   const auto problems = canopen::check_eds(text, "vtvpcd.eds");
-  for (const auto& p : problems) ADD_FAILURE() << p.message();
+  for (const auto& p : problems) ADD_FAILURE() << p.to_string();
   canopen::EdsError error;
   std::vector<canopen::EdsError> warnings;
   auto od = canopen::parse_eds(text, "vtvpcd.eds", error, nullptr, &warnings);
-  ASSERT_TRUE(od) << error.message();
+  ASSERT_TRUE(od) << error.to_string();
   EXPECT_TRUE(warnings.empty());
 
   std::string why;

@@ -32,7 +32,7 @@ TEST_P(WdgaEds, ParsesWithoutWarningsIntoTheSameDictionary) {
   std::vector<canopen::EdsError> warnings;
   canopen::EdsFileInfo info;
   const auto parsed = canopen::parse_eds(text, "wdga.eds", error, &info, &warnings);
-  ASSERT_TRUE(parsed) << error.message();
+  ASSERT_TRUE(parsed) << error.to_string();
   EXPECT_TRUE(warnings.empty());
   EXPECT_TRUE(info.lss_supported);
   Settings s;

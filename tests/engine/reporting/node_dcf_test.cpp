@@ -37,8 +37,8 @@ TEST(NodeDcf, RoundTripsWithTheConfiguredValuesAndNodeId) {
   canopen::EdsError error;
   std::vector<canopen::EdsError> warnings;
   const auto od = canopen::parse_eds(text, "dsv.dcf", error, nullptr, &warnings);
-  ASSERT_TRUE(od) << error.message();
-  EXPECT_TRUE(warnings.empty()) << warnings.front().message();
+  ASSERT_TRUE(od) << error.to_string();
+  EXPECT_TRUE(warnings.empty()) << warnings.front().to_string();
 
   // The running node of the same scenario: every value the DCF states is the node's value.
   scenario::World world(s, scenario::default_environment(), {}, 1);

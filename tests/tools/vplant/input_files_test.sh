@@ -45,11 +45,11 @@ clock: {duration: 100ms}
 YAML
 }
 
-expect_refusal "node --eds FIFO" "$tmp/fifo.eds:0: not a regular file (a FIFO)" \
+expect_refusal "node --eds FIFO" "$tmp/fifo.eds: not a regular file (a FIFO)" \
   "$vplant" node --eds "$tmp/fifo.eds" --virtual --duration 0.1
-expect_refusal "node --eds /dev/zero" "/dev/zero:0: not a regular file (a character device)" \
+expect_refusal "node --eds /dev/zero" "/dev/zero: not a regular file (a character device)" \
   "$vplant" node --eds /dev/zero --virtual --duration 0.1
-expect_refusal "node --eds DIR" "$tmp:0: not a regular file (a directory)" \
+expect_refusal "node --eds DIR" "$tmp: not a regular file (a directory)" \
   "$vplant" node --eds "$tmp" --virtual --duration 0.1
 expect_refusal "node --store FIFO" "$tmp/fifo.store: not a regular file (a FIFO)" \
   "$vplant" node --eds "$eds" --store "$tmp/fifo.store" --virtual --duration 0.1
