@@ -138,12 +138,12 @@ void DsvDevice::install_device_hooks() {
     canopen::EntryRef<std::int64_t>(e).set(input_->internal_resolution(parameters_->control_mode()));
     return SdoAbort::None;
   });
-  temperature_entry_ = od.entry(0x2002, 0);
-  temperature_out_ = canopen::EntryRef<std::int64_t>::optional(temperature_entry_);
-  od.add_read_hook(0x2002, 0, [this](OdEntry& e, Origin) {
-    canopen::EntryRef<std::int64_t>(e).set_rounded(temperature_, -55, 150);
+  temperature_out_ = canopen::EntryRef<std::int64_t>::optional(od, 0x2002, 0);
+  od.add_read_hook(0x2002, 0, [this](OdEntry&, Origin) {
+    temperature_out_.set_rounded(temperature_, -55, 150);  // the hook's entry
     return SdoAbort::None;
   });
+  tpdo2_entry2_ = canopen::EntryRef<std::int64_t>(od, 0x1A01, 2);  // restored every cycle in mode 4
   // 1A01h:02 reads as printed for mode 4 (63'81'00'10h, A-05) while the PDO carries 6381h:01.
   od.add_read_hook(0x1A01, 2, [this](OdEntry& e, Origin) {
     if (mapping_mode_ == mode::kVprcClosed) canopen::EntryRef<std::int64_t>(e).set(mapping_entry(0x6381, 0, options_.m4_tpdo_six_bytes ? 32 : 16));
@@ -179,7 +179,7 @@ void DsvDevice::reset_model() {
 }
 
 void DsvDevice::restore_mapping_entry() {
-  if (mapping_mode_ == mode::kVprcClosed) canopen::EntryRef<std::int64_t>(*node_owner_->od().entry(0x1A01, 2)).set(tpdo2_internal_);
+  if (mapping_mode_ == mode::kVprcClosed) tpdo2_entry2_.set(tpdo2_internal_);
 }
 
 void DsvDevice::restore_alias_entry() {
