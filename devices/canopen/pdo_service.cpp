@@ -234,11 +234,16 @@ void PdoService::load(Tpdo& t) {
 
 void PdoService::reload() {
   for (auto& r : rpdos_) {
+    bind_timers(r);
     load(r, PdoDirection::Receive);
     r.latched = false;
   }
-  for (auto& t : tpdos_) load(t);
+  for (auto& t : tpdos_) {
+    bind_timers(t);
+    load(t);
+  }
   rebuild_lists();
+  layout_ = od_.layout();  // everything resolved afresh: objects a product added after bind_objects() included
 }
 
 std::vector<PdoService::Route> PdoService::rpdo_routes() const {
