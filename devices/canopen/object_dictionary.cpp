@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <stdexcept>
 #include <utility>
 
@@ -49,10 +50,15 @@ void OdEntry::reset_to_default(std::uint8_t node_id) { value = default_for_node(
 
 // ---- ObjectDictionary: building ----------------------------------------------------------------
 
+std::uint64_t ObjectDictionary::LayoutStamp::next() {
+  static std::atomic<std::uint64_t> counter{0};  // dictionaries are built on several threads
+  return counter.fetch_add(1, std::memory_order_relaxed) + 1;
+}
+
 OdObject& ObjectDictionary::add_object(std::uint16_t index, std::string name, ObjectCode code) {
   auto [it, inserted] = objects_.try_emplace(index);
   if (inserted) {
-    cache_.clear();  // it may hold misses for this index
+    layout_.change();
     it->second.index = index;
     it->second.name = std::move(name);
     it->second.code = code;
@@ -65,7 +71,7 @@ OdEntry& ObjectDictionary::add_entry(std::uint16_t index, std::uint8_t sub, std:
   auto& obj = add_object(index, sub == 0 ? name : std::string{}, ObjectCode::Var);
   if (sub != 0 && obj.code == ObjectCode::Var) obj.code = ObjectCode::Record;
   OdEntry& e = obj.entries[sub];
-  cache_.clear();
+  layout_.change();  // a new entry, or one replaced (its type and size may differ)
   e.index = index;
   e.sub = sub;
   e.name = std::move(name);
@@ -81,7 +87,7 @@ OdEntry& ObjectDictionary::add_entry(std::uint16_t index, std::uint8_t sub, std:
 
 OdEntry& ObjectDictionary::add_entry(OdEntry entry) {
   auto& obj = add_object(entry.index, std::string{}, ObjectCode::Record);
-  cache_.clear();
+  layout_.change();
   return obj.entries[entry.sub] = std::move(entry);
 }
 
@@ -97,9 +103,14 @@ Bytes ObjectDictionary::encode(DataType type, std::string_view text) {
   return Bytes(text.begin(), text.end());
 }
 
+void ObjectDictionary::remove_object(std::uint16_t index) {
+  objects_.erase(index);
+  layout_.change();
+}
+
 void ObjectDictionary::remove_entry(std::uint16_t index, std::uint8_t sub) {
   if (auto* o = object(index)) o->entries.erase(sub);
-  cache_.clear();
+  layout_.change();
 }
 
 // ---- lookup ------------------------------------------------------------------------------------
@@ -114,13 +125,11 @@ const OdObject* ObjectDictionary::object(std::uint16_t index) const {
   return it == objects_.end() ? nullptr : &it->second;
 }
 
-const OdEntry* ObjectDictionary::find_entry(std::uint16_t index, std::uint8_t sub) const {
-  OdEntry* e = nullptr;
-  if (auto* o = const_cast<OdObject*>(object(index))) {
-    if (auto it = o->entries.find(sub); it != o->entries.end()) e = &it->second;
-  }
-  cache_.insert(EntryCache::key(index, sub), e);  // map nodes: the address is stable until removed
-  return e;
+const OdEntry* ObjectDictionary::entry(std::uint16_t index, std::uint8_t sub) const {
+  const OdObject* o = object(index);
+  if (!o) return nullptr;
+  auto it = o->entries.find(sub);
+  return it == o->entries.end() ? nullptr : &it->second;
 }
 
 SdoAbort ObjectDictionary::locate(std::uint16_t index, std::uint8_t sub, OdEntry*& out) {

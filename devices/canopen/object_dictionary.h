@@ -18,7 +18,6 @@
 #include <vector>
 
 #include "devices/canopen/data_type.h"
-#include "devices/canopen/entry_cache.h"
 #include "devices/canopen/sdo_abort.h"
 #include "devices/canopen/stored_value.h"
 
@@ -101,8 +100,8 @@ struct OdObject {
   /// CiA 306 ObjFlags: hints for configuration tools (bit 0 refuse write on download, bit 1
   /// refuse read on scan). The device itself ignores them.
   std::uint32_t obj_flags = 0;
-  // Node-based: entry addresses stay valid. Add and remove entries only through ObjectDictionary
-  // (it keeps its lookup cache in step).
+  // Node-based: entry addresses stay valid until the entry is removed. Add and remove entries
+  // only through ObjectDictionary (it changes its layout() stamp).
   std::map<std::uint8_t, OdEntry> entries;
 };
 
@@ -250,10 +249,7 @@ class ObjectDictionary {
                      T default_value, bool pdo_mappable = false) {
     return add_entry(index, sub, std::move(name), type, access, encode(type, default_value), pdo_mappable);
   }
-  void remove_object(std::uint16_t index) {
-    objects_.erase(index);
-    cache_.clear();
-  }
+  void remove_object(std::uint16_t index);
   void remove_entry(std::uint16_t index, std::uint8_t sub);
 
   /// Encodes a typed value into `type`'s byte representation.
@@ -269,12 +265,12 @@ class ObjectDictionary {
   OdEntry* entry(std::uint16_t index, std::uint8_t sub) {
     return const_cast<OdEntry*>(std::as_const(*this).entry(index, sub));
   }
-  const OdEntry* entry(std::uint16_t index, std::uint8_t sub) const {
-    OdEntry* e = nullptr;
-    if (cache_.find(EntryCache::key(index, sub), e)) return e;  // inline: the per-tick path
-    return find_entry(index, sub);
-  }
+  const OdEntry* entry(std::uint16_t index, std::uint8_t sub) const;
   const std::map<std::uint16_t, OdObject>& objects() const { return objects_; }
+  /// Changes whenever an object or entry is added, replaced or removed, or the dictionary is
+  /// assigned: code holding entry pointers beyond a build (PDO mappings) resolves them again when
+  /// it differs from the stamp it resolved them under. Unique across dictionaries and copies.
+  std::uint64_t layout() const { return layout_.value; }
   /// NoObject / NoSubIndex / None.
   SdoAbort locate(std::uint16_t index, std::uint8_t sub, OdEntry*& out);
 
@@ -320,12 +316,24 @@ class ObjectDictionary {
   bool visible(std::uint16_t index) const { return !visibility_ || visibility_(index); }
 
  private:
-  const OdEntry* find_entry(std::uint16_t index, std::uint8_t sub) const;  // and cache it
   OdEntry& must_entry(std::uint16_t index, std::uint8_t sub);
   const OdEntry& must_entry(std::uint16_t index, std::uint8_t sub) const;
 
+  /// A fresh value on construction, copy, assignment and every change of the object set.
+  struct LayoutStamp {
+    std::uint64_t value = next();
+    LayoutStamp() = default;
+    LayoutStamp(const LayoutStamp&) : value(next()) {}
+    LayoutStamp& operator=(const LayoutStamp&) {
+      value = next();
+      return *this;
+    }
+    void change() { value = next(); }
+    static std::uint64_t next();
+  };
+
   std::map<std::uint16_t, OdObject> objects_;
-  mutable EntryCache cache_;  // entry() on every tick and frame: see entry_cache.h
+  LayoutStamp layout_;
   AccessAborts access_aborts_;
   Visibility visibility_;
 };

@@ -35,8 +35,7 @@ void PdoService::bind_objects() {
       r.number = i + 1;
       r.comm_index = comm;
       r.map_index = map;
-      r.inhibit_time = EntryRef<std::uint16_t>::optional(od, comm, 3);
-      r.event_timer = EntryRef<std::uint16_t>::optional(od, comm, 5);
+      bind_timers(r);
       rpdos_.push_back(r);
       install_checks(comm, map, PdoDirection::Receive);
     }
@@ -48,13 +47,31 @@ void PdoService::bind_objects() {
       t.number = i + 1;
       t.comm_index = comm;
       t.map_index = map;
-      t.inhibit_time = EntryRef<std::uint16_t>::optional(od, comm, 3);
-      t.event_timer = EntryRef<std::uint16_t>::optional(od, comm, 5);
+      bind_timers(t);
       tpdos_.push_back(t);
       install_checks(comm, map, PdoDirection::Transmit);
     }
   }
   rebuild_lists();
+  layout_ = od.layout();
+}
+
+void PdoService::bind_timers(Pdo& p) {
+  p.inhibit_time = EntryRef<std::uint16_t>::optional(od_, p.comm_index, 3);
+  p.event_timer = EntryRef<std::uint16_t>::optional(od_, p.comm_index, 5);
+}
+
+void PdoService::relink() {
+  for (auto& r : rpdos_) {
+    bind_timers(r);
+    resolve(r, PdoDirection::Receive);
+  }
+  for (auto& t : tpdos_) {
+    bind_timers(t);
+    resolve(t, PdoDirection::Transmit);
+  }
+  rebuild_lists();
+  layout_ = od_.layout();
 }
 
 void PdoService::rebuild_lists() {
@@ -192,10 +209,14 @@ void PdoService::load(Pdo& p, PdoDirection dir) {
   p.rtr_allowed = !(v & kNoRtr);
   const auto* type = od.entry(p.comm_index, 2);
   p.type = type ? type->as<std::uint8_t>() : 255;
-  const auto* count = od.entry(p.map_index, 0);
-  const std::uint8_t n = count ? count->as<std::uint8_t>() : 0;
   p.valid = !(v & kInvalid) && !p.device_disabled;
-  if (resolve_mapping(od, p.map_index, n, dir, rules(), p.mapping) != SdoAbort::None) {
+  resolve(p, dir);
+}
+
+void PdoService::resolve(Pdo& p, PdoDirection dir) {
+  const auto* count = od_.entry(p.map_index, 0);
+  const std::uint8_t n = count ? count->as<std::uint8_t>() : 0;
+  if (resolve_mapping(od_, p.map_index, n, dir, rules(), p.mapping) != SdoAbort::None) {
     p.mapping = PdoMapping{};  // an invalid stored mapping makes the PDO send/accept nothing
   }
 }
@@ -213,11 +234,16 @@ void PdoService::load(Tpdo& t) {
 
 void PdoService::reload() {
   for (auto& r : rpdos_) {
+    bind_timers(r);
     load(r, PdoDirection::Receive);
     r.latched = false;
   }
-  for (auto& t : tpdos_) load(t);
+  for (auto& t : tpdos_) {
+    bind_timers(t);
+    load(t);
+  }
   rebuild_lists();
+  layout_ = od_.layout();  // everything resolved afresh: objects a product added after bind_objects() included
 }
 
 std::vector<PdoService::Route> PdoService::rpdo_routes() const {
@@ -253,6 +279,7 @@ std::uint16_t PdoService::inhibit_100us(const Pdo& p) const { return p.inhibit_t
 // ---- receive ------------------------------------------------------------------------------------
 
 void PdoService::on_rpdo(int number, const sim::CanFrame& frame, sim::Time now) {
+  follow_layout();
   if (!pdo_allowed(status_.nmt_state) || frame.rtr) return;
   auto it = std::find_if(rpdos_.begin(), rpdos_.end(), [number](const Rpdo& r) { return r.number == number; });
   if (it == rpdos_.end() || !it->valid) return;
@@ -397,6 +424,7 @@ bool PdoService::active(PdoDirection dir, int number) const {
 }
 
 void PdoService::request_tpdo(int number) {
+  follow_layout();
   for (auto& t : tpdos_) {
     if (t.number != number) continue;
     t.event_pending = true;
@@ -405,6 +433,7 @@ void PdoService::request_tpdo(int number) {
 }
 
 void PdoService::restart_event_timer(int number) {
+  follow_layout();
   for (auto& t : tpdos_) {
     if (t.number != number) continue;
     const auto et = event_timer_ms(t);
@@ -418,6 +447,7 @@ void PdoService::set_min_spacing(int number, sim::Duration spacing) {
 }
 
 void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time now) {
+  follow_layout();
   if (!pdo_allowed(status_.nmt_state) || !frame.rtr || !policy_.tpdo_remote_requests) return;
   auto it = std::find_if(tpdos_.begin(), tpdos_.end(), [number](const Tpdo& t) { return t.number == number; });
   if (it == tpdos_.end() || !it->valid || !it->rtr_allowed || it->mapping.length == 0) return;
@@ -445,6 +475,7 @@ void PdoService::on_tpdo_rtr(int number, const sim::CanFrame& frame, sim::Time n
 }
 
 void PdoService::on_sync(std::uint8_t counter, sim::Time now) {
+  follow_layout();
   if (!pdo_allowed(status_.nmt_state)) return;
   if (any_latched_) {
     any_latched_ = false;  // an RPDO latched again while these are applied sets it anew
@@ -487,6 +518,7 @@ void PdoService::on_sync(std::uint8_t counter, sim::Time now) {
 }
 
 void PdoService::on_enter_operational(sim::Time now) {
+  follow_layout();
   for (auto& r : rpdos_) {
     r.latched = false;
     r.deadline_armed = false;
@@ -511,6 +543,7 @@ void PdoService::on_enter_operational(sim::Time now) {
 }
 
 void PdoService::process(sim::Time now) {
+  follow_layout();
   if (!pdo_allowed(status_.nmt_state)) return;
   if (any_deadline_armed_) {
     any_deadline_armed_ = false;  // set again below for every deadline still running

@@ -109,6 +109,16 @@ class PdoService {
   template <typename Visit>
   void walk(const std::vector<std::uint16_t>& list, Visit&& visit);
   void load(Pdo& p, PdoDirection dir);
+  /// Resolves p's mapping (mapping object sub 0 and its entries) into p.mapping.
+  void resolve(Pdo& p, PdoDirection dir);
+  /// The mapped entries and the bound communication entries point into the dictionary: when its
+  /// object set changed since they were resolved (an entry removed or replaced while mapped),
+  /// every PDO resolves them again before it touches one. One compare on each entry point.
+  void follow_layout() {
+    if (od_.layout() != layout_) relink();
+  }
+  void relink();
+  void bind_timers(Pdo& p);
   void load(Tpdo& t);  ///< load(t, Transmit) plus the TPDO-only SYNC start value
   void install_checks(std::uint16_t comm_index, std::uint16_t map_index, PdoDirection dir);
   void apply_rpdo(Rpdo& p);
@@ -132,6 +142,7 @@ class PdoService {
   std::vector<Tpdo> tpdos_;
   std::vector<std::uint16_t> sync_tpdos_;
   std::vector<std::uint16_t> async_tpdos_;
+  std::uint64_t layout_ = 0;          ///< od_.layout() the pointers were resolved under
   std::uint32_t lists_version_ = 0;  ///< bumped by rebuild_lists(): a walk notices a rebuild under it
   bool any_latched_ = false;         ///< some RPDO may be latched for the next SYNC
   bool any_deadline_armed_ = false;  ///< some RPDO may have its reception deadline armed

@@ -22,7 +22,7 @@ using canopen::SdoAbort;
 namespace {
 // EMCY codes (§4.4.1) and the error-register bits this emulation sets with them.
 constexpr std::uint16_t kGeneral = 0x1000, kOutputCurrent = 0x2300, kSupplyLow = 0x3412, kControlVoltageLow = 0x3422,
-                        kRam = 0x5520, kEeprom = 0x5510, kSolenoidA = 0x5411, kSolenoidB = 0x5412;
+                        kEeprom = 0x5510, kSolenoidA = 0x5411, kSolenoidB = 0x5412;
 constexpr std::uint8_t kRegGeneric = 0x01, kRegCurrent = 0x03, kRegVoltage = 0x05;
 constexpr std::uint16_t kSetpoints[] = {0x6300, 0x6380, 0x6480, 0x6500, 0x6600, 0x6B00, 0x6B80};
 constexpr std::uint16_t kMeasured[] = {0x6381, 0x6501, 0x6601, 0x63D0, 0x6550, 0x6650};
@@ -138,12 +138,12 @@ void DsvDevice::install_device_hooks() {
     canopen::EntryRef<std::int64_t>(e).set(input_->internal_resolution(parameters_->control_mode()));
     return SdoAbort::None;
   });
-  temperature_entry_ = od.entry(0x2002, 0);
-  temperature_out_ = canopen::EntryRef<std::int64_t>::optional(temperature_entry_);
-  od.add_read_hook(0x2002, 0, [this](OdEntry& e, Origin) {
-    canopen::EntryRef<std::int64_t>(e).set_rounded(temperature_, -55, 150);
+  temperature_out_ = canopen::EntryRef<std::int64_t>::optional(od, 0x2002, 0);
+  od.add_read_hook(0x2002, 0, [this](OdEntry&, Origin) {
+    temperature_out_.set_rounded(temperature_, -55, 150);  // the hook's entry
     return SdoAbort::None;
   });
+  tpdo2_entry2_ = canopen::EntryRef<std::int64_t>(od, 0x1A01, 2);  // restored every cycle in mode 4
   // 1A01h:02 reads as printed for mode 4 (63'81'00'10h, A-05) while the PDO carries 6381h:01.
   od.add_read_hook(0x1A01, 2, [this](OdEntry& e, Origin) {
     if (mapping_mode_ == mode::kVprcClosed) canopen::EntryRef<std::int64_t>(e).set(mapping_entry(0x6381, 0, options_.m4_tpdo_six_bytes ? 32 : 16));
@@ -159,41 +159,13 @@ void DsvDevice::install_device_hooks() {
       }
     }
   }
-  // Non-volatile memory: the characteristic points are stored with the application group, a
-  // failing memory raises EMCY 0x5520 besides the SDO abort 0x06060000.
-  node_owner_->store().allow_device_stored(DsvParameters::kCurveStoreIndex, DsvParameters::kCurveStoreFirstSub,
-                                           DsvParameters::kCurveStoreLastSub);
-  for (std::uint8_t sub : {std::uint8_t{1}, std::uint8_t{3}}) {
-    od.add_observer(0x1010, sub, [this](OdEntry&, Origin o) {
-      if (o != Origin::Sdo) return;
-      auto& memory = node_owner_->store().memory();
-      parameters_->save_curves(memory);
-      std::string error;
-      (void)memory.save(error);
-      curve_restore_pending_ = false;
-    });
-    od.add_observer(0x1011, sub, [this](OdEntry&, Origin o) {
-      if (o == Origin::Sdo) curve_restore_pending_ = true;
-    });
-  }
-  for (std::uint16_t index : {std::uint16_t{0x1010}, std::uint16_t{0x1011}}) {
-    for (std::uint8_t sub = 1; sub <= 3; ++sub) {
-      od.add_check(
-          index, sub,
-          [this, index](const OdEntry&, std::span<std::uint8_t> data, Origin origin) {
-            restore_alias_entry();  // 230Eh:01 is saved with its own value
-            const auto v = static_cast<std::uint32_t>(canopen::decode_unsigned(data));
-            const bool signature = v == (index == 0x1010 ? canopen::StoreRestore::kSaveSignature : canopen::StoreRestore::kLoadSignature);
-            if (origin == Origin::Sdo && signature && faults_.memory_failure) errors().latch(kRam, kRegGeneric);
-            return SdoAbort::None;
-          },
-          CheckStage::State);
-    }
-  }
+  // What 1010h/1011h do on a DSV beyond the node's store (dsv_stored_objects.h).
+  stored_ = std::make_unique<DsvStoredObjects>(od, node_owner_->store(), *parameters_, errors(),
+                                               [this] { restore_alias_entry(); });
 }
 
 void DsvDevice::power_on(sim::Time now) {
-  curve_restore_pending_ = false;  // a power cycle discards a pending restore
+  stored_->power_on();
   node_owner_->power_on(now);
 }
 
@@ -201,18 +173,13 @@ void DsvDevice::reset_model() {
   conditions_passed_ = kNoConditionsPassed;  // the errors were cleared: detect afresh
   chain_->reset();
   open_a_detected_ = open_b_detected_ = false;
-  if (curve_restore_pending_) {
-    parameters_->reset_curves();
-    curve_restore_pending_ = false;
-  } else {
-    parameters_->load_curves(node_owner_->store().memory());
-  }
+  stored_->reset();
   temperature_ = options_.ambient_temperature;
   control_->dsm().set_active_allowed(parameters_->control_mode() != 0);
 }
 
 void DsvDevice::restore_mapping_entry() {
-  if (mapping_mode_ == mode::kVprcClosed) canopen::EntryRef<std::int64_t>(*node_owner_->od().entry(0x1A01, 2)).set(tpdo2_internal_);
+  if (mapping_mode_ == mode::kVprcClosed) tpdo2_entry2_.set(tpdo2_internal_);
 }
 
 void DsvDevice::restore_alias_entry() {

@@ -29,6 +29,7 @@
 #include "devices/dsv/dsv_options.h"
 #include "devices/dsv/dsv_parameters.h"
 #include "devices/dsv/dsv_signal_chain.h"
+#include "devices/dsv/dsv_stored_objects.h"
 #include "devices/profiles/dsp408/channel_control.h"
 #include "devices/canopen/entry_ref.h"
 #include "devices/profiles/wandfluh/valve_application.h"
@@ -80,13 +81,13 @@ class DsvDevice final : public devices::Device, private wandfluh::ValveApplicati
   std::unique_ptr<DsvParameters> parameters_;
   std::unique_ptr<ActualValueInput> input_;
   std::unique_ptr<DsvSignalChain> chain_;
-  canopen::OdEntry* temperature_entry_ = nullptr;
+  std::unique_ptr<DsvStoredObjects> stored_;
   canopen::EntryRef<std::int64_t> temperature_out_;  // 0x2002, published every cycle
 
   int active_rpdo_ = 1, active_tpdo_ = 1;
   std::int8_t mapping_mode_ = 0;     ///< control mode the PDO set was generated for
   std::uint32_t tpdo2_internal_ = 0; ///< 1A01h:02 as the PDO service resolves it
-  bool curve_restore_pending_ = false;
+  canopen::EntryRef<std::int64_t> tpdo2_entry2_;  ///< 1A01h:02
   std::optional<canopen::Bytes> alias_saved_;  ///< 230Eh:01's own (mode 4) value while it shows 250Eh:01
   bool open_a_detected_ = false, open_b_detected_ = false;  ///< an open circuit seen while driven
 

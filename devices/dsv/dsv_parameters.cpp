@@ -31,7 +31,12 @@ DsvParameters::DsvParameters(canopen::ObjectDictionary& od, const DsvOptions& op
       mode_of_operation_(od, 0x2042, 0),
       characteristic_optimisation_on_(canopen::EntryRef<std::int64_t>::optional(od.entry(0x2344, 1))),
       displayed_unit_(od.entry(0x2202, 0)) {
-  for (const auto& spec : application_objects()) (void)value_entry(spec.index);
+  for (const auto& spec : application_objects()) {
+    OdEntry* e = od.entry(spec.index, 1);
+    if (!e) e = od.entry(spec.index, 0);
+    if (e) values_.push_back({spec.index, e});
+  }
+  std::sort(values_.begin(), values_.end(), [](const ValueEntry& a, const ValueEntry& b) { return a.index < b.index; });
   install_rules();
   install_shared();
   install_characteristic_optimisation(0x2344);
@@ -44,13 +49,11 @@ OdEntry& DsvParameters::entry(std::uint16_t index) {
 }
 
 OdEntry* DsvParameters::value_entry(std::uint16_t index) const {
-  const std::uint32_t key = canopen::EntryCache::key(index, 0);
-  OdEntry* e = nullptr;
-  if (values_.find(key, e)) return e;
-  e = od_.entry(index, 1);
-  if (!e) e = od_.entry(index, 0);
-  values_.insert(key, e);
-  return e;
+  auto it = std::lower_bound(values_.begin(), values_.end(), index,
+                             [](const ValueEntry& v, std::uint16_t i) { return v.index < i; });
+  if (it != values_.end() && it->index == index) return it->entry;
+  OdEntry* e = od_.entry(index, 1);  // not an application object: looked up
+  return e ? e : od_.entry(index, 0);
 }
 
 std::int64_t DsvParameters::value(std::uint16_t index) const {

@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "devices/canopen/entry_ref.h"
-#include "devices/canopen/entry_cache.h"
 #include "devices/canopen/object_dictionary.h"
 #include "devices/canopen/parameter_store.h"
 #include "devices/dsv/dsv_objects.h"
@@ -67,9 +66,13 @@ class DsvParameters {
   canopen::EntryRef<std::int8_t> mode_of_operation_;
   canopen::EntryRef<std::int64_t> characteristic_optimisation_on_;  // 0x2344:01
   canopen::OdEntry* displayed_unit_;               // 0x2202
-  // index → the entry value() reads (sub 1 of a record, else sub 0): one probe per read, filled
-  // with every application object when built.
-  mutable canopen::EntryCache values_;
+  // Every application object's index → the entry value() reads (sub 1 of a record, else sub 0),
+  // sorted by index, bound when built: a binary search instead of two map walks.
+  struct ValueEntry {
+    std::uint16_t index;
+    canopen::OdEntry* entry;
+  };
+  std::vector<ValueEntry> values_;
   std::array<std::vector<canopen::OdEntry*>, 17> shared_{};
   std::array<canopen::EntryRef<std::int64_t>, 17> shared_first_{};  // the entry shared() reads
   std::array<dsp408::CharacteristicCurve, 2> curves_;

@@ -23,8 +23,8 @@ DsvSignalChain::DsvSignalChain(DsvParameters& parameters, ActualValueInput& inpu
   loops_[1] = loop_objects(mode::kDsc, od);
   loops_[2] = loop_objects(mode::kDpc, od);
   for (int i = 0; i < 3; ++i) {
-    measured_[2 * i] = loops_[i].actual;
-    measured_[2 * i + 1] = loops_[i].deviation;
+    measured_[static_cast<std::size_t>(2 * i)] = canopen::EntryRef<std::int64_t>(*loops_[i].actual);
+    measured_[static_cast<std::size_t>(2 * i + 1)] = canopen::EntryRef<std::int64_t>(*loops_[i].deviation);
   }
   auto e = [this](std::uint16_t index) { return p_.bind_value(index); };
   par_ = {e(0x6300), e(0x6B00), e(0x6380), e(0x6B80), e(0x6480), e(0x62F0), e(0x2043),
@@ -279,16 +279,16 @@ void DsvSignalChain::publish_measurements() {
   const int on = m == mode::kVprcClosed ? 0 : m == mode::kDsc ? 1 : m == mode::kDpc ? 2 : -1;
   for (int i = 0; i < 3; ++i) {
     if (i != on) {  // the objects of the other modes read 0
-      canopen::EntryRef<std::int64_t>(*measured_[2 * i]).set(0);
-      canopen::EntryRef<std::int64_t>(*measured_[2 * i + 1]).set(0);
+      measured_[static_cast<std::size_t>(2 * i)].set(0);
+      measured_[static_cast<std::size_t>(2 * i + 1)].set(0);
     }
   }
   if (on < 0) return;
   const double lim = on == 0 ? 32767.0 : 2147483647.0;
   const double x = input_.value(m);
   const double w = loops_[on].setpoint->as<double>();
-  canopen::EntryRef<std::int64_t>(*loops_[on].actual).set_rounded(x, -lim - 1, lim);
-  canopen::EntryRef<std::int64_t>(*loops_[on].deviation).set_rounded(w - x, -lim - 1, lim);
+  measured_[static_cast<std::size_t>(2 * on)].set_rounded(x, -lim - 1, lim);
+  measured_[static_cast<std::size_t>(2 * on + 1)].set_rounded(w - x, -lim - 1, lim);
 }
 
 dsp408::StatusFlags DsvSignalChain::status_flags() const {

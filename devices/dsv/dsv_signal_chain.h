@@ -85,7 +85,8 @@ class DsvSignalChain {
   dsp408::ChannelControl& control_;
   const DsvOptions& o_;
   LoopObjects loops_[3];  // modes 4, 7, 9
-  canopen::OdEntry* measured_[6] = {};  // actual and deviation of each loop (publish_measurements)
+  // Actual and deviation of each loop, published every cycle (publish_measurements).
+  std::array<canopen::EntryRef<std::int64_t>, 6> measured_{};
   Parameters par_;
 
   dsp408::CommandValueRamp ramp_, ramp_b_;  // ramp_b_: set point B in mode of operation 3

@@ -45,8 +45,8 @@ void Md2Channel::install(canopen::ObjectDictionary& od) {
   const std::uint16_t act[3] = {ix_.vprc_actual(), ix_.dsc_actual(), ix_.dpc_actual()};
   const std::uint16_t dev[3] = {ix_.vprc_deviation(), ix_.dsc_deviation(), ix_.dpc_deviation()};
   for (int i = 0; i < 3; ++i) {
-    actuals_[i] = od.entry(act[i], 1);
-    deviations_[i] = od.entry(dev[i], 1);
+    actuals_[i] = canopen::EntryRef<std::int64_t>::optional(od, act[i], 1);
+    deviations_[i] = canopen::EntryRef<std::int64_t>::optional(od, dev[i], 1);
   }
 
   // Command values are stored in any state but refused while the set point comes from a local
@@ -74,8 +74,8 @@ void Md2Channel::install(canopen::ObjectDictionary& od) {
       publish_measurements();
       return SdoAbort::None;
     };
-    od.add_read_hook(actuals_[i]->index, 1, refresh);
-    od.add_read_hook(deviations_[i]->index, 1, refresh);
+    od.add_read_hook(actuals_[i].entry().index, 1, refresh);
+    od.add_read_hook(deviations_[i].entry().index, 1, refresh);
   }
   control_.set_status_flags([this] { return status_flags(); }, true);  // see status_flags()
   control_.dsm().set_listener([this](DeviceState from, DeviceState to) { on_state_change(from, to); });
@@ -170,8 +170,8 @@ void Md2Channel::publish_measurements() {
   for (int i = 0; i < 3; ++i) {
     const bool on = i == active;
     const double lim = i == 0 ? 32767.0 : 2147483647.0;
-    canopen::EntryRef<std::int64_t>(*actuals_[i]).set_rounded(on ? last_actual_ : 0.0, -lim - 1, lim);
-    canopen::EntryRef<std::int64_t>(*deviations_[i]).set_rounded(on ? w - last_actual_ : 0.0, -lim - 1, lim);
+    actuals_[i].set_rounded(on ? last_actual_ : 0.0, -lim - 1, lim);
+    deviations_[i].set_rounded(on ? w - last_actual_ : 0.0, -lim - 1, lim);
   }
 }
 

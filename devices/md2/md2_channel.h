@@ -103,8 +103,8 @@ class Md2Channel {
   canopen::OdEntry* speed_pos_ = nullptr;
   canopen::OdEntry* speed_neg_ = nullptr;
   canopen::OdEntry* setpoints_[6] = {};  // vpoc, vprc, dcol, dsc, dpc, n-point
-  canopen::OdEntry* actuals_[3] = {};    // vprc, dsc, dpc
-  canopen::OdEntry* deviations_[3] = {};
+  canopen::EntryRef<std::int64_t> actuals_[3];  // vprc, dsc, dpc: published every cycle
+  canopen::EntryRef<std::int64_t> deviations_[3];
 
   double hold_setpoint_ = 0;   ///< frozen on entering HOLD
   double effective_ = 0;       ///< set point after ramp / rate limitation

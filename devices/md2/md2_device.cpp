@@ -47,10 +47,9 @@ Md2Device::Md2Device(std::unique_ptr<canopen::Node> node, const Md2Options& opti
   for (int c = 1; c <= options_.channels; ++c) {
     channels_.push_back(std::make_unique<Md2Channel>(n.od(), options_, c));
   }
-  temperature_entry_ = n.od().entry(0x2002, 0);
-  temperature_out_ = canopen::EntryRef<std::int64_t>::optional(temperature_entry_);
-  n.od().add_read_hook(0x2002, 0, [this](canopen::OdEntry& e, canopen::Origin) {
-    canopen::EntryRef<std::int64_t>(e).set_rounded(temperature_, -55, 150);
+  temperature_out_ = canopen::EntryRef<std::int64_t>::optional(n.od(), 0x2002, 0);
+  n.od().add_read_hook(0x2002, 0, [this](canopen::OdEntry&, canopen::Origin) {
+    temperature_out_.set_rounded(temperature_, -55, 150);  // the hook's entry
     return canopen::SdoAbort::None;
   });
   // Delivery state (§5.8): node address from the command line, the pre-configured control mode.

@@ -71,7 +71,6 @@ class Md2Device final : public devices::Device, private wandfluh::ValveApplicati
   Md2Options options_;
   std::unique_ptr<canopen::Node> node_owner_;
   std::vector<std::unique_ptr<Md2Channel>> channels_;
-  canopen::OdEntry* temperature_entry_ = nullptr;
   canopen::EntryRef<std::int64_t> temperature_out_;  // 0x2002, published every cycle
 
   // Inputs and fault conditions.

@@ -51,8 +51,8 @@ void ChannelControl::install() {
     if (from_bus(origin)) dsm_.write_control_word(value, origin == Origin::Sdo ? "SDO" : "RPDO");
   });
 
-  od_.add_read_hook(objects_.status_word, 0, [this](OdEntry& e, Origin) {
-    canopen::EntryRef<std::uint16_t>(e).set(status_word());
+  od_.add_read_hook(objects_.status_word, 0, [this](OdEntry&, Origin) {
+    status_entry_.set(status_word());  // the hook's entry, bound once: a read hook runs per TPDO
     return SdoAbort::None;
   });
 

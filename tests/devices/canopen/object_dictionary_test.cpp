@@ -40,6 +40,69 @@ TEST(ObjectDictionary, LocateDistinguishesMissingObjectAndSubIndex) {
   EXPECT_EQ(e->as<std::uint32_t>(), 0x12345678u);
 }
 
+TEST(ObjectDictionary, LookupsStayRightAcrossAdditionRemovalAndCopies) {
+  ObjectDictionary od;
+  od.add_var(0x2000, "a", DataType::Unsigned16, Access::ReadWrite, ObjectDictionary::encode(DataType::Unsigned16, 7));
+  EXPECT_EQ(od.entry(0x2000, 1), nullptr);
+  EXPECT_EQ(od.entry(0x2100, 0), nullptr);
+  od.add_entry(0x2000, 1, "b", DataType::Unsigned8, Access::ReadWrite, ObjectDictionary::encode(DataType::Unsigned8, 9));
+  ASSERT_NE(od.entry(0x2000, 1), nullptr);  // found after it was added
+  EXPECT_EQ(od.get<int>(0x2000, 1), 9);
+  EXPECT_EQ(od.entry(0x2000, 0), &od.object(0x2000)->entries.at(0));
+
+  OdEntry copied = *od.entry(0x2000, 1);
+  copied.sub = 2;
+  od.add_entry(copied);
+  ASSERT_NE(od.entry(0x2000, 2), nullptr);
+  od.add_var(0x2100, "c", DataType::Unsigned8, Access::ReadWrite, ObjectDictionary::encode(DataType::Unsigned8, 1));
+  EXPECT_NE(od.entry(0x2100, 0), nullptr);
+
+  od.remove_entry(0x2000, 1);
+  EXPECT_EQ(od.entry(0x2000, 1), nullptr);
+  od.remove_object(0x2100);
+  EXPECT_EQ(od.entry(0x2100, 0), nullptr);
+
+  ObjectDictionary copy = od;
+  copy.set<int>(0x2000, 0, 11);
+  EXPECT_EQ(copy.entry(0x2000, 0), &copy.object(0x2000)->entries.at(0));  // its own entry
+  EXPECT_EQ(od.get<int>(0x2000, 0), 7);
+  od = copy;
+  EXPECT_EQ(od.get<int>(0x2000, 0), 11);
+  EXPECT_EQ(od.entry(0x2000, 0), &od.object(0x2000)->entries.at(0));
+}
+
+TEST(ObjectDictionary, LayoutStampChangesWithTheObjectSetNotWithValues) {
+  ObjectDictionary od;
+  od.add_var(0x2000, "a", DataType::Unsigned16, Access::ReadWrite, 7);
+  auto stamp = od.layout();
+  od.set<int>(0x2000, 0, 8);
+  EXPECT_EQ(od.write(0x2000, 0, ObjectDictionary::encode(DataType::Unsigned16, 9), Origin::Sdo), SdoAbort::None);
+  od.add_object(0x2000, "again", ObjectCode::Var);  // already there: nothing changes
+  EXPECT_EQ(od.layout(), stamp);
+
+  auto changed = [&] {
+    const bool c = od.layout() != stamp;
+    stamp = od.layout();
+    return c;
+  };
+  od.add_entry(0x2000, 1, "b", DataType::Unsigned8, Access::ReadWrite, 1);
+  EXPECT_TRUE(changed());
+  od.add_entry(0x2000, 1, "b wider", DataType::Unsigned32, Access::ReadWrite, 1u);  // replaced in place
+  EXPECT_TRUE(changed());
+  od.add_entry(*od.entry(0x2000, 1));
+  EXPECT_TRUE(changed());
+  od.remove_entry(0x2000, 1);
+  EXPECT_TRUE(changed());
+  od.add_object(0x2100, "c", ObjectCode::Record);
+  EXPECT_TRUE(changed());
+  od.remove_object(0x2100);
+  EXPECT_TRUE(changed());
+  const ObjectDictionary copy = od;
+  EXPECT_NE(copy.layout(), od.layout());  // a copy's entries are others: never mistaken for these
+  od = copy;
+  EXPECT_TRUE(changed());
+}
+
 TEST(ObjectDictionary, AccessRightsAndLimits) {
   auto od = vtest::make_generic_od();
   const Bytes two{0x01, 0x00};

@@ -526,6 +526,57 @@ TEST_F(PdoTest, RpdoRemappedWhileOperationalWritesItsNewObjects) {
   EXPECT_EQ(h.node().od().get<std::int32_t>(0x6001), 5);
 }
 
+// The dictionary's object set changing while PDOs map its entries: the PDOs resolve their
+// mappings again before the next frame, so no pointer to a removed entry is followed.
+TEST_F(PdoTest, ObjectRemovedWhileMappedIsNoLongerSentOrWritten) {
+  operational();
+  h.take();
+  h.node().od().set<std::int32_t>(0x6001, 0, -2);
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0xFE, 0xFF, 0xFF, 0xFF})});
+  h.node().od().remove_object(0x6001);  // mapped into TPDO2 and RPDO1
+  h.send(0x080, {});
+  EXPECT_TRUE(h.take().empty());  // TPDO2's stored mapping no longer resolves: nothing to send
+  EXPECT_EQ(h.node().pdo().tpdo_length(2), 0);
+  h.send(0x205, {0x01, 0x00, 0x00, 0x00, 0x02, 0x00});
+  EXPECT_EQ(h.node().pdo().rpdo_length(1), 0);
+  EXPECT_EQ(h.node().od().get<std::uint16_t>(0x6000), 0x1234u);  // RPDO1 writes nothing now
+}
+
+TEST_F(PdoTest, ObjectReplacedWhileMappedIsTheOneThePdosCarry) {
+  operational();
+  h.take();
+  auto& od = h.node().od();
+  od.remove_object(0x6001);
+  od.add_var(0x6001, "Command I32 again", canopen::DataType::Integer32, canopen::Access::ReadWrite, 0x11223344, true);
+  h.send(0x080, {});
+  EXPECT_EQ(h.take(), Frames{Frame(0x285, {0x44, 0x33, 0x22, 0x11})});
+  h.send(0x205, {0x05, 0x00, 0x00, 0x00, 0x02, 0x00});
+  EXPECT_EQ(od.get<std::int32_t>(0x6001), 5);  // the new entry
+  od.remove_entry(0x1800, 5);                  // TPDO1's event timer, read every tick
+  h.run_ms(5);
+  h.take();  // TPDO1 sent the 0x6000 the RPDO changed
+  od.set<std::uint16_t>(0x6000, 0, 0x0102);
+  h.run_ticks(1);
+  EXPECT_EQ(h.take(), Frames{Frame(0x185, {0x02, 0x01, 0x55})});
+}
+
+TEST_F(PdoTest, RemappedViaSdoTheTpdoCarriesTheNewObjectAndNotTheOld) {
+  ASSERT_EQ(h.write(0x1801, 1, 0x80000285, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 0, 0, 1), 0u);
+  ASSERT_EQ(h.write(0x1A01, 1, 0x60000010, 4), 0u);
+  ASSERT_EQ(h.write(0x1A01, 0, 1, 1), 0u);
+  ASSERT_EQ(h.write(0x1801, 1, 0x00000285, 4), 0u);
+  operational();
+  h.take();
+  h.node().od().set<std::int32_t>(0x6001, 0, -2);  // the old object: not in the frame
+  h.node().od().set<std::uint16_t>(0x6000, 0, 0xBEEF);
+  h.send(0x080, {});
+  Frames frames = h.take();
+  ASSERT_FALSE(frames.empty());
+  EXPECT_EQ(frames.back(), Frame(0x285, {0xEF, 0xBE}));
+}
+
 TEST(PdoWidthConversion, NarrowObjectsInWideSlotsAreSignOrZeroExtendedAndWideOnesTruncated) {
   canopen::NodePolicy policy;
   policy.pdo.width_conversion = true;
