@@ -90,6 +90,19 @@ void SettingsReader::get(const std::string& name, double& value, double min, dou
   value = v;
 }
 
+void SettingsReader::get_above(const std::string& name, double& value, double min, double max) {
+  const auto* text = find(name);
+  if (!text) return;
+  char* end = nullptr;
+  const double v = std::strtod(text->c_str(), &end);
+  if (text->empty() || *end != '\0' || !std::isfinite(v)) return fail(name, *text, "a number");
+  if (v <= min || v > max) {
+    if (error_.empty()) error_ = "setting " + name + ": value " + *text + " out of range (" + shortest(min) + ", " + shortest(max) + "]";
+    return;
+  }
+  value = v;
+}
+
 void SettingsReader::get(const std::string& name, double& value) {
   const auto* text = find(name);
   if (!text) return;
@@ -118,7 +131,11 @@ void SettingsReader::get(const std::string& name, std::string& value, std::size_
   value = *text;
 }
 
-void SettingsReader::choose(const std::string& name, int& value, std::initializer_list<const char*> choices) {
+void SettingsReader::reject(const std::string& name, const std::string& text, const std::string& reason) {
+  if (error_.empty()) error_ = "setting " + name + "='" + text + "': " + reason;
+}
+
+void SettingsReader::choose(const std::string& name, int& value, std::span<const char* const> choices) {
   const auto* text = find(name);
   if (!text) return;
   int i = 0;

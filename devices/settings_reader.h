@@ -11,6 +11,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -28,12 +29,23 @@ class SettingsReader {
   void deprecated(const std::string& old_name, const std::string& name);
 
   void get(const std::string& name, double& value, double min, double max);
+  /// A number above `min` (excluded) up to `max`: a gain, a volume, a time constant.
+  void get_above(const std::string& name, double& value, double min, double max);
   /// Any finite number.
   void get(const std::string& name, double& value);
   void get(const std::string& name, bool& value);
   void get(const std::string& name, std::string& value, std::size_t max_length);
   /// One of `choices`; `value` receives its position in the list.
-  void choose(const std::string& name, int& value, std::initializer_list<const char*> choices);
+  void choose(const std::string& name, int& value, std::initializer_list<const char*> choices) {
+    choose(name, value, std::span<const char* const>(choices.begin(), choices.size()));
+  }
+  void choose(const std::string& name, int& value, std::span<const char* const> choices);
+
+  /// For a setting whose value only the product can check (a list, a free object index): the
+  /// text given (nullptr: not given); reject() says why it cannot be used.
+  const std::string* text(const std::string& name) { return find(name); }
+  /// "setting name='text': reason" (the first error is the one reported).
+  void reject(const std::string& name, const std::string& text, const std::string& reason);
 
   template <typename T>
   void get_uint(const std::string& name, T& value, std::uint64_t min, std::uint64_t max) {

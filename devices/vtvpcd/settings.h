@@ -98,11 +98,10 @@ struct Settings {
   bool builtin_plant = true;  ///< standalone: the built-in actuator/volume model drives the inputs
   BuiltinPlantSettings plant;
 
-  /// Parses DeviceOptions::settings; returns false and sets `error` on an unknown name or a bad
-  /// value.
+  /// Reads DeviceOptions::settings with the products' one settings reader (devices/settings_reader.h;
+  /// the table is settings.cpp's read()); returns false and sets `error` on an unknown name or a
+  /// bad value.
   static bool parse(const std::map<std::string, std::string>& in, Settings& out, std::string& error);
-  /// Every setting name with its default text (for docs and `--setting` help).
-  static std::vector<std::pair<std::string, std::string>> defaults();
 };
 
 }  // namespace vtvpcd

@@ -98,5 +98,27 @@ TEST(SettingsReader, ADeprecatedNameReadsAsTheNewOneWithAWarning) {
   EXPECT_EQ(r3.finish(), "setting 'dither_freq' is the deprecated name of 'dither_frequency': give only 'dither_frequency'");
 }
 
+TEST(SettingsReader, AnOpenLowerBoundAProductsOwnCheckAndChoicesFromATable) {
+  const std::map<std::string, std::string> given = {{"gain", "0"}, {"list", "a,b"}, {"mode", "fast"}};
+  SettingsReader r(given);
+  double gain = 4;
+  r.get_above("gain", gain, 0, 10);
+  EXPECT_EQ(r.finish(), "setting gain: value 0 out of range (0, 10]");
+  EXPECT_EQ(gain, 4);
+
+  SettingsReader r2(given);
+  const std::string* list = r2.text("list");
+  ASSERT_NE(list, nullptr);
+  EXPECT_EQ(r2.text("absent"), nullptr);
+  r2.reject("list", *list, "expected three names");
+  int mode = 0;
+  const std::vector<const char*> modes = {"slow", "fast"};
+  r2.choose("mode", mode, modes);
+  EXPECT_EQ(mode, 1);
+  r2.get_above("gain", gain, -1, 10);
+  EXPECT_EQ(gain, 0);
+  EXPECT_EQ(r2.finish(), "setting list='a,b': expected three names");  // the first error
+}
+
 }  // namespace
 }  // namespace devices

@@ -7,24 +7,69 @@
 
 using namespace vtvpcd;
 
-TEST(Settings, DocumentedDefaultsParseToTheDefaultSettings) {
-  std::map<std::string, std::string> all;
-  for (const auto& [name, text] : Settings::defaults()) all[name] = text;
-  Settings parsed, defaults;
+TEST(Settings, EverySettingIsReadIntoItsField) {
+  Settings s;
   std::string error;
-  ASSERT_TRUE(Settings::parse(all, parsed, error)) << error;
-  EXPECT_EQ(parsed.boot_delay_ms, defaults.boot_delay_ms);
-  EXPECT_EQ(parsed.areas.from_card, defaults.areas.from_card);
-  EXPECT_EQ(parsed.areas.to_card, defaults.areas.to_card);
-  EXPECT_EQ(parsed.do_functions, defaults.do_functions);
-  EXPECT_EQ(parsed.p_ref_bar, defaults.p_ref_bar);
-  EXPECT_EQ(parsed.plant.k_load, defaults.plant.k_load);
-  EXPECT_EQ(parsed.pump_type, defaults.pump_type);
-  EXPECT_EQ(parsed.controlled_pressure, ControlledPressure::FlowSide);
-  EXPECT_EQ(defaults.controlled_pressure, ControlledPressure::FlowSide);
-  EXPECT_EQ(parsed.timeout_reaction, defaults.timeout_reaction);
-  EXPECT_TRUE(parsed.builtin_plant);
-  EXPECT_GE(all.size(), 40u);
+  ASSERT_TRUE(Settings::parse({{"boot_delay_ms", "500"},
+                               {"nmt_stop_supported", "false"},
+                               {"sdo_size_mode", "strict"},
+                               {"nmt_82", "can_controller"},
+                               {"node_id_object", "0x4000"},
+                               {"vendor_id", "0x12345678"},
+                               {"tpdo_area", "0x2F0F:4"},
+                               {"area_straddle", "pad"},
+                               {"pump_type", "A2V"},
+                               {"controlled_pressure", "max"},
+                               {"scale_0x2F0E", "324.7"},
+                               {"timeout_reaction", "report"},
+                               {"do_functions", "off,off,slave,off,off,off,angle_window"},
+                               {"p_ref_bar", "280"},
+                               {"x_off_pct", "-10"},
+                               {"k_load", "0"},
+                               {"pilot_supply", "internal"}},
+                              s, error))
+      << error;
+  EXPECT_EQ(s.boot_delay_ms, 500);
+  EXPECT_FALSE(s.nmt_stop_supported);
+  EXPECT_TRUE(s.sdo_size_strict);
+  EXPECT_TRUE(s.reset_communication_keeps_parameters);
+  EXPECT_EQ(s.node_id_object, 0x4000);
+  EXPECT_EQ(s.identity[0], 0x12345678u);
+  EXPECT_EQ(format_area(s.areas.from_card), "0x2F0F:4");
+  EXPECT_EQ(s.areas.straddle, Straddle::Pad);
+  EXPECT_EQ(s.pump_type, PumpType::A2V);
+  EXPECT_EQ(s.controlled_pressure, ControlledPressure::Max);
+  EXPECT_TRUE(s.press_cmd_scale_printed);
+  EXPECT_EQ(s.timeout_reaction, TimeoutReaction::Report);
+  EXPECT_EQ(s.do_functions[2], OutputFunction::SlaveMode);
+  EXPECT_EQ(s.do_functions[6], OutputFunction::AngleWindow);
+  EXPECT_EQ(s.p_ref_bar, 280.0);
+  EXPECT_EQ(s.x_off_pct, -10.0);
+  EXPECT_EQ(s.plant.k_load, 0.0);
+  EXPECT_EQ(s.plant.pilot_supply, PilotSupply::Internal);
+
+  // Nothing given: the defaults the struct documents, and the manual's example areas.
+  Settings none, defaults;
+  ASSERT_TRUE(Settings::parse({}, none, error)) << error;
+  EXPECT_EQ(none.areas.from_card, BusManagerAreas::manual_example().from_card);
+  EXPECT_EQ(none.do_functions, defaults.do_functions);
+  EXPECT_EQ(none.controlled_pressure, ControlledPressure::FlowSide);
+}
+
+TEST(Settings, ErrorsAreWordedAsEveryProducts) {
+  Settings s;
+  std::string error;
+  EXPECT_FALSE(Settings::parse({{"p_ref_bar", "0"}}, s, error));
+  EXPECT_EQ(error, "setting p_ref_bar: value 0 out of range (0, 600]");
+  EXPECT_FALSE(Settings::parse({{"boot_delay_ms", "70000"}}, s, error));
+  EXPECT_EQ(error, "setting boot_delay_ms: value 70000 out of range [0, 60000]");
+  EXPECT_FALSE(Settings::parse({{"pump_type", "A10V"}}, s, error));
+  EXPECT_EQ(error, "setting pump_type='A10V': expected A4VSO | A4VSG | A2V");
+  EXPECT_FALSE(Settings::parse({{"node_id_object", "0x2C72"}}, s, error));
+  EXPECT_EQ(error, "setting node_id_object='0x2C72': expected none or a free index 0x2000..0x5FFF (not a chapter-4 object)");
+  EXPECT_FALSE(Settings::parse({{"pump", "A2V"}}, s, error));
+  EXPECT_NE(error.find("unknown setting 'pump' (known: "), std::string::npos) << error;
+  EXPECT_NE(error.find("pump_type"), std::string::npos) << error;
 }
 
 TEST(Settings, RejectsUnknownNamesAndBadValues) {
