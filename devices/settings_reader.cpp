@@ -80,22 +80,30 @@ void SettingsReader::get(const std::string& name, std::int64_t& value, std::int6
   value = v;
 }
 
-void SettingsReader::get(const std::string& name, double& value, double min, double max) {
+const std::string* SettingsReader::find_number(const std::string& name, double& v) {
   const auto* text = find(name);
-  if (!text) return;
+  if (!text) return nullptr;
   char* end = nullptr;
-  const double v = std::strtod(text->c_str(), &end);
-  if (text->empty() || *end != '\0' || !std::isfinite(v)) return fail(name, *text, "a number");
+  v = std::strtod(text->c_str(), &end);
+  if (text->empty() || *end != '\0' || !std::isfinite(v)) {
+    fail(name, *text, "a number");
+    return nullptr;
+  }
+  return text;
+}
+
+void SettingsReader::get(const std::string& name, double& value, double min, double max) {
+  double v = 0;
+  const auto* text = find_number(name, v);
+  if (!text) return;
   if (v < min || v > max) return out_of_range(name, *text, shortest(min), shortest(max));
   value = v;
 }
 
 void SettingsReader::get_above(const std::string& name, double& value, double min, double max) {
-  const auto* text = find(name);
+  double v = 0;
+  const auto* text = find_number(name, v);
   if (!text) return;
-  char* end = nullptr;
-  const double v = std::strtod(text->c_str(), &end);
-  if (text->empty() || *end != '\0' || !std::isfinite(v)) return fail(name, *text, "a number");
   if (v <= min || v > max) {
     if (error_.empty()) error_ = "setting " + name + ": value " + *text + " out of range (" + shortest(min) + ", " + shortest(max) + "]";
     return;
@@ -104,12 +112,8 @@ void SettingsReader::get_above(const std::string& name, double& value, double mi
 }
 
 void SettingsReader::get(const std::string& name, double& value) {
-  const auto* text = find(name);
-  if (!text) return;
-  char* end = nullptr;
-  const double v = std::strtod(text->c_str(), &end);
-  if (text->empty() || *end != '\0' || !std::isfinite(v)) return fail(name, *text, "a number");
-  value = v;
+  double v = 0;
+  if (find_number(name, v)) value = v;
 }
 
 void SettingsReader::get(const std::string& name, bool& value) {

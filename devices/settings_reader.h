@@ -77,6 +77,8 @@ class SettingsReader {
 
  private:
   const std::string* find(const std::string& name);
+  /// find() and the text as a finite number in `v`; nullptr when not given or not a number (the error kept).
+  const std::string* find_number(const std::string& name, double& v);
   void fail(const std::string& name, const std::string& text, const std::string& expected);
   void out_of_range(const std::string& name, const std::string& text, const std::string& min, const std::string& max);
 
