@@ -14,6 +14,7 @@
 #include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace devices {
@@ -40,6 +41,20 @@ class SettingsReader {
     choose(name, value, std::span<const char* const>(choices.begin(), choices.size()));
   }
   void choose(const std::string& name, int& value, std::span<const char* const> choices);
+  /// One of `options` by its name, into an enum or bool field (kept when not given):
+  /// `choose("pump_type", s.pump_type, {{"A4VSO", PumpType::A4VSO}, {"A2V", PumpType::A2V}})`.
+  template <typename T>
+  void choose(const std::string& name, T& field, std::initializer_list<std::pair<const char*, T>> options) {
+    std::vector<const char*> names;
+    int at = -1;
+    for (const auto& [text, value] : options) {
+      if (value == field) at = static_cast<int>(names.size());
+      names.push_back(text);
+    }
+    const int before = at;
+    choose(name, at, names);
+    if (at >= 0 && at != before) field = options.begin()[at].second;
+  }
 
   /// For a setting whose value only the product can check (a list, a free object index): the
   /// text given (nullptr: not given); reject() says why it cannot be used.

@@ -1,7 +1,6 @@
 #include "devices/vtvpcd/settings.h"
 
 #include <algorithm>
-#include <initializer_list>
 #include <iterator>
 #include <string_view>
 #include <utility>
@@ -13,20 +12,6 @@
 namespace vtvpcd {
 
 namespace {
-
-/// One of `options` by its name (the setting's text); the field keeps its value when not given.
-template <typename E>
-void choose(devices::SettingsReader& r, const char* name, E& field, std::initializer_list<std::pair<const char*, E>> options) {
-  std::vector<const char*> names;
-  int at = -1;
-  for (const auto& [text, value] : options) {
-    if (value == field) at = static_cast<int>(names.size());
-    names.push_back(text);
-  }
-  const int before = at;
-  r.choose(name, at, names);
-  if (at >= 0 && at != before) field = options.begin()[at].second;
-}
 
 constexpr std::pair<const char*, OutputFunction> kOutputFunctions[] = {
     {"controller_active", OutputFunction::ControllerActive}, {"angle_window", OutputFunction::AngleWindow},
@@ -90,10 +75,10 @@ void read(devices::SettingsReader& r, Settings& s) {
   r.get_int("reset_boot_delay_ms", s.reset_boot_delay_ms, 0, 100);
   r.get("nmt_stop_supported", s.nmt_stop_supported);
   r.get("emcy_in_preoperational", s.emcy_in_preoperational);
-  choose(r, "sdo_size_mode", s.sdo_size_strict, {{"lenient", false}, {"strict", true}});
-  choose(r, "sdo_range_mode", s.sdo_range_strict, {{"none", false}, {"strict", true}});
+  r.choose("sdo_size_mode", s.sdo_size_strict, {{"lenient", false}, {"strict", true}});
+  r.choose("sdo_range_mode", s.sdo_range_strict, {{"none", false}, {"strict", true}});
   r.get("expose_mapping_objects", s.expose_mapping_objects);
-  choose(r, "nmt_82", s.reset_communication_keeps_parameters, {{"reset_communication", false}, {"can_controller", true}});
+  r.choose("nmt_82", s.reset_communication_keeps_parameters, {{"reset_communication", false}, {"can_controller", true}});
   read_node_id_object(r, s.node_id_object);
   r.get_uint("device_type", s.device_type, 0, 0xFFFFFFFFu);
   r.get_uint("vendor_id", s.identity[0], 0, 0xFFFFFFFFu);
@@ -102,21 +87,21 @@ void read(devices::SettingsReader& r, Settings& s) {
   r.get_uint("serial_number", s.identity[3], 0, 0xFFFFFFFFu);
   read_area(r, "tpdo_area", s.areas.from_card);
   read_area(r, "rpdo_area", s.areas.to_card);
-  choose(r, "area_straddle", s.areas.straddle, {{"reject", Straddle::Reject}, {"pad", Straddle::Pad}});
+  r.choose("area_straddle", s.areas.straddle, {{"reject", Straddle::Reject}, {"pad", Straddle::Pad}});
   // application
-  choose(r, "pump_type", s.pump_type, {{"A4VSO", PumpType::A4VSO}, {"A4VSG", PumpType::A4VSG}, {"A2V", PumpType::A2V}});
-  choose(r, "controlled_pressure", s.controlled_pressure,
+  r.choose("pump_type", s.pump_type, {{"A4VSO", PumpType::A4VSO}, {"A4VSG", PumpType::A4VSG}, {"A2V", PumpType::A2V}});
+  r.choose("controlled_pressure", s.controlled_pressure,
          {{"flow_side", ControlledPressure::FlowSide}, {"A", ControlledPressure::A}, {"B", ControlledPressure::B},
           {"max", ControlledPressure::Max}});
-  choose(r, "cmd_source", s.cmd_source, {{"bus", CommandSource::Bus}, {"analog", CommandSource::Analog}});
-  choose(r, "direct_mode_ramps", s.direct_mode_ramps_set0, {{"none", false}, {"set0", true}});
-  choose(r, "trigger_multibit", s.trigger_multibit, {{"lowest", MultiBitTrigger::Lowest}, {"fault", MultiBitTrigger::Fault}});
-  choose(r, "scale_0x2F0E", s.press_cmd_scale_printed, {{"327.67", false}, {"324.7", true}});
-  choose(r, "pressure_bus_unit", s.pressure_bus_unit,
+  r.choose("cmd_source", s.cmd_source, {{"bus", CommandSource::Bus}, {"analog", CommandSource::Analog}});
+  r.choose("direct_mode_ramps", s.direct_mode_ramps_set0, {{"none", false}, {"set0", true}});
+  r.choose("trigger_multibit", s.trigger_multibit, {{"lowest", MultiBitTrigger::Lowest}, {"fault", MultiBitTrigger::Fault}});
+  r.choose("scale_0x2F0E", s.press_cmd_scale_printed, {{"327.67", false}, {"324.7", true}});
+  r.choose("pressure_bus_unit", s.pressure_bus_unit,
          {{"bar", PressureBusUnit::Bar}, {"percent", PressureBusUnit::PercentOfReference}});
   r.get("fault_latch", s.fault_latch);
   r.get("monitor_enable", s.monitor_enable);
-  choose(r, "timeout_reaction", s.timeout_reaction, {{"stop", TimeoutReaction::Stop}, {"report", TimeoutReaction::Report}});
+  r.choose("timeout_reaction", s.timeout_reaction, {{"stop", TimeoutReaction::Stop}, {"report", TimeoutReaction::Report}});
   read_output_functions(r, s.do_functions);
   r.get_above("p_ref_bar", s.p_ref_bar, 0, 600);
   r.get_above("k_pos", s.k_pos, 0, 1000);
@@ -137,7 +122,7 @@ void read(devices::SettingsReader& r, Settings& s) {
   r.get("k_relief", p.k_relief, 0, 10000);
   r.get("p_boost_bar", p.p_boost_bar, 0, 600);
   r.get("pA_const_bar", p.pA_const_bar, 0, 600);
-  choose(r, "pilot_supply", p.pilot_supply, {{"external", PilotSupply::External}, {"internal", PilotSupply::Internal}});
+  r.choose("pilot_supply", p.pilot_supply, {{"external", PilotSupply::External}, {"internal", PilotSupply::Internal}});
 }
 
 }  // namespace

@@ -7,19 +7,13 @@
 #include "tests/support/temp_path.h"
 #include "tests/engine/run_helper.h"
 #include "tests/support/read_file.h"
+#include "tests/engine/test_world.h"
 
 namespace {
 
 using vtest::read_file;
 
-const std::string kRun = R"(
-nodes:
-  - {name: ax, device: axis, node_id: 5}
-plant:
-  axis: {gain: 1.0}
-wires:
-  - {from: ax.velocity, to: axis.velocity_command}
-  - {from: axis.position, to: ax.position}
+const std::string kRun = vtest::kMachine + R"(
 clock: {duration: 1s}
 outputs:
   sample_period: 100ms

@@ -12,6 +12,7 @@
 #include "tests/engine/run_helper.h"
 #include "tests/support/read_file.h"
 #include "tests/support/temp_path.h"
+#include "tests/engine/test_world.h"
 
 namespace {
 
@@ -19,15 +20,8 @@ using nlohmann::json;
 using vtest::read_file;
 
 // SYNC every millisecond for 3 s: more frames than the report keeps.
-const std::string kRun = R"(
+const std::string kRun = vtest::kMachine + R"(
 name: axis </script> case
-nodes:
-  - {name: ax, device: axis, node_id: 5}
-plant:
-  axis: {gain: 1.0}
-wires:
-  - {from: ax.velocity, to: axis.velocity_command}
-  - {from: axis.position, to: ax.position}
 clock: {duration: 3s}
 outputs:
   sample_period: 10ms
